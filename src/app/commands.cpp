@@ -1,0 +1,17 @@
+#include "app/commands.hpp"
+
+namespace kessler::app {
+
+namespace {
+int exit_code = 0;
+}
+
+void setExitCode(int code) { exit_code = code; }
+int exitCode() { return exit_code; }
+
+void addCommands(CLI::App& app) {
+  addRunCommands(app);
+  addVerifyCommand(app);
+}
+
+}  // namespace kessler::app

@@ -1,0 +1,15 @@
+#pragma once
+// Subcommands of the `kessler` program. Each registers itself on the CLI11 app; its callback
+// runs the command and records the exit code.
+#include <CLI/CLI.hpp>
+
+namespace kessler::app {
+
+void addCommands(CLI::App& app);
+void addVerifyCommand(CLI::App& app);
+void addRunCommands(CLI::App& app);  // run and check
+
+void setExitCode(int code);
+int exitCode();
+
+}  // namespace kessler::app

@@ -1,0 +1,35 @@
+#pragma once
+// Local maximum-entropy (LME) shape functions (Arroyo & Ortiz, IJNME 65, 2006):
+//   N_a(x) = exp(-beta |x - x_a|^2 + lambda* . (x - x_a)) / Z(x, lambda*),
+// where lambda* minimises log Z (eq. 19), found by Newton's method with a backtracking line
+// search, warm-started from the previous step's lambda. Gradients (eq. 21):
+//   grad N_a = -N_a J^-1 (x - x_a),  J = d^2 log Z / d lambda^2 (the covariance of x - x_a).
+// The identities sum N_a = 1, sum N_a x_a = x, sum grad N_a = 0, sum x_a (x) grad N_a = I hold
+// to the Newton tolerance. A point outside the convex hull of its nodes has no minimiser
+// (log Z is unbounded below): the solve reports it instead of returning garbage.
+#include "core/types.hpp"
+
+#include <span>
+
+namespace kessler::lme {
+
+// beta = gamma / h^2 and the cut-off radius r = h sqrt(-ln tol / gamma) where N_a < tol.
+inline double beta(double gamma, double h) { return gamma / (h * h); }
+double cutoffRadius(double gamma, double h, double tolerance);
+
+enum class Status { converged, not_converged, outside_hull };
+
+struct Result {
+  Status status = Status::converged;
+  int iterations = 0;
+  double residual = 0.0;  // |sum N_a (x - x_a)| / h at the end
+};
+
+// Shape functions at a point from the offsets d_a = x - x_a of its nodes. On input `lambda`
+// is the starting guess; on output the minimiser. N and dN have the size of d.
+Result shapeFunctions(std::span<const Vec3> d, double beta, double h, Vec3& lambda, std::span<double> N,
+                      std::span<Vec3> dN);
+
+const char* describe(Status status);
+
+}  // namespace kessler::lme

@@ -1,0 +1,27 @@
+#pragma once
+// Point-node connectivity in compressed rows: for each material point its neighbour nodes
+// with shape-function values and gradients; and the transpose (for each node the entries
+// that reference it, in increasing point order) so that nodal sums are gathers whose
+// order does not depend on the number of threads.
+#include "core/types.hpp"
+
+#include <vector>
+
+namespace kessler {
+
+struct Connectivity {
+  std::vector<Index> offset;        // size points+1; entries of point p: [offset[p], offset[p+1])
+  std::vector<LocalIndex> node;     // neighbour node of each entry
+  std::vector<double> N;            // shape function value at the point
+  std::vector<Vec3> dN;             // its gradient
+
+  std::vector<Index> node_offset;   // size nodes+1
+  std::vector<Index> node_entry;    // entries referencing each node, sorted by point
+  std::vector<LocalIndex> entry_point;  // point of each entry
+
+  LocalIndex points() const { return offset.empty() ? 0 : static_cast<LocalIndex>(offset.size() - 1); }
+  // Builds node_offset, node_entry and entry_point from offset and node.
+  void buildTranspose(LocalIndex node_count);
+};
+
+}  // namespace kessler

@@ -1,0 +1,65 @@
+#pragma once
+// The particle store: structure-of-arrays for nodes and material points (DESIGN.md §2).
+// Points are stored grouped by body so that each body is one contiguous range and a
+// material law runs over a whole range at once. Loops run over the owned ranges
+// [0, owned) so that MPI ghosts can be appended behind them later.
+#include "core/types.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace kessler {
+
+struct NodeStore {
+  std::vector<Index> id;           // global id
+  std::vector<std::int32_t> body;  // body the node was created with
+  std::vector<Vec3> x;             // position
+  std::vector<Vec3> v;             // velocity over the last step, (x_k+1 - x_k)/dt
+  std::vector<double> mass;        // lumped mass, sum_p N_a(x_p) m_p
+  std::vector<Vec3> momentum;      // l_a = sum_p N_a(x_p) m_p v_p
+  std::vector<Vec3> force;         // internal force
+  std::vector<std::uint8_t> constrained;  // bit i set: velocity component i is prescribed
+  std::vector<Vec3> prescribed_v;         // prescribed velocity components
+  LocalIndex owned = 0;
+
+  LocalIndex size() const { return static_cast<LocalIndex>(x.size()); }
+  void resize(std::size_t n);
+};
+
+struct PointStore {
+  std::vector<Index> id;
+  std::vector<std::int32_t> body;
+  std::vector<Vec3> x;
+  std::vector<Vec3> v;
+  std::vector<double> mass;     // fixed
+  std::vector<double> volume;   // current
+  std::vector<double> volume0;  // reference
+  std::vector<double> spacing0; // reference support size h (mean edge of the initial tet)
+  std::vector<Mat3> F;          // deformation gradient
+  std::vector<Mat3> dF;         // increment of the last step
+  std::vector<Mat3> stress;     // Cauchy stress
+  std::vector<double> energy;   // specific internal energy (J/kg)
+  std::vector<double> sound_speed;      // longitudinal wave speed, for the time step
+  std::vector<double> plastic_strain;   // equivalent plastic strain
+  std::vector<double> temperature;      // K
+  std::vector<std::uint8_t> eroded;     // 1: failed, carries no stress
+  std::vector<Vec3> lambda;     // LME Lagrange multiplier, warm start for the next solve
+  LocalIndex owned = 0;
+
+  LocalIndex size() const { return static_cast<LocalIndex>(x.size()); }
+  void resize(std::size_t n);
+  double density(LocalIndex p) const { return mass[p] / volume[p]; }
+  // Current support size: the reference spacing scaled with the volume change.
+  double spacing(LocalIndex p) const;
+};
+
+// A body: a contiguous range of points and of nodes, one material.
+struct BodyInfo {
+  std::string name;
+  int material = 0;
+  LocalIndex point_begin = 0, point_end = 0;
+  LocalIndex node_begin = 0, node_end = 0;
+};
+
+}  // namespace kessler

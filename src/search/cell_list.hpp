@@ -1,0 +1,66 @@
+#pragma once
+// Uniform-grid cell list over a set of positions, for fixed-radius neighbour queries.
+// Queries visit candidates in a fixed order (cell by cell, then by index), so results do
+// not depend on the number of threads.
+#include "core/types.hpp"
+
+#include <array>
+#include <cmath>
+#include <vector>
+
+namespace kessler {
+
+class CellList {
+ public:
+  // Bins positions [0, count) into cubic cells of edge `cell_size` (enlarged if the grid
+  // would have far more cells than positions, e.g. for a sparse debris cloud).
+  void build(const std::vector<Vec3>& x, LocalIndex count, double cell_size);
+
+  // Calls f(index, squared distance) for every binned position within `radius` of q.
+  template <typename F>
+  void forEachWithin(const Vec3& q, double radius, F&& f) const;
+
+  double cellSize() const { return cell_; }
+
+ private:
+  std::array<int, 3> cellOf(const Vec3& x) const;
+  long flat(int i, int j, int k) const { return (static_cast<long>(k) * dims_[1] + j) * dims_[0] + i; }
+
+  const std::vector<Vec3>* x_ = nullptr;
+  Vec3 origin_ = Vec3::Zero();
+  double cell_ = 1.0;
+  std::array<int, 3> dims_{1, 1, 1};
+  std::vector<LocalIndex> start_;   // size cells+1
+  std::vector<LocalIndex> sorted_;  // position indices grouped by cell
+};
+
+inline std::array<int, 3> CellList::cellOf(const Vec3& x) const {
+  std::array<int, 3> c{};
+  for (int d = 0; d < 3; ++d) c[d] = static_cast<int>(std::floor((x[d] - origin_[d]) / cell_));
+  return c;
+}
+
+template <typename F>
+void CellList::forEachWithin(const Vec3& q, double radius, F&& f) const {
+  const double r2 = radius * radius;
+  std::array<int, 3> lo = cellOf(q - Vec3::Constant(radius));
+  std::array<int, 3> hi = cellOf(q + Vec3::Constant(radius));
+  for (int d = 0; d < 3; ++d) {
+    lo[d] = std::max(lo[d], 0);
+    hi[d] = std::min(hi[d], dims_[d] - 1);
+    if (lo[d] > hi[d]) return;
+  }
+  const std::vector<Vec3>& x = *x_;
+  for (int k = lo[2]; k <= hi[2]; ++k)
+    for (int j = lo[1]; j <= hi[1]; ++j)
+      for (int i = lo[0]; i <= hi[0]; ++i) {
+        const long c = flat(i, j, k);
+        for (LocalIndex s = start_[c]; s < start_[c + 1]; ++s) {
+          const LocalIndex a = sorted_[s];
+          const double d2 = (x[a] - q).squaredNorm();
+          if (d2 <= r2) f(a, d2);
+        }
+      }
+}
+
+}  // namespace kessler

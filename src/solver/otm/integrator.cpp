@@ -1,0 +1,183 @@
+#include "solver/otm/integrator.hpp"
+
+#include "core/error.hpp"
+#include "core/reduce.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace kessler::otm {
+
+Integrator::Integrator(Model& model, const Settings& settings)
+    : model_(model), settings_(settings), neighbourhoods_(settings) {
+  KESSLER_VERIFY(settings.cfl > 0.0 && settings.cfl <= 1.0, "cfl must lie in (0, 1], got {}", settings.cfl);
+  KESSLER_VERIFY(settings.end_time > 0.0, "end_time must be positive, got {}", settings.end_time);
+}
+
+void Integrator::initialise() {
+  {
+    ScopedPhase phase(timers_, "constitutive");
+    updateMaterials(0.0);
+  }
+  neighbourhoods_.update(model_);
+  timers_.add("search", neighbourhoods_.searchSeconds());
+  timers_.add("shape functions", neighbourhoods_.shapeSeconds());
+  dt_next_ = dt_initial_ = stableStep();
+}
+
+void Integrator::step() {
+  const double dt = std::min(dt_next_, settings_.end_time - time_);
+  KESSLER_VERIFY(dt > 0.0, "step called after the end time");
+  {
+    ScopedPhase phase(timers_, "assembly");
+    assembleNodes();
+  }
+  {
+    ScopedPhase phase(timers_, "node update");
+    // Discrete Euler-Lagrange equations for a variable step (DESIGN.md §2 step 5).
+    updateNodes(dt, 0.5 * (dt_last_ + dt));
+  }
+  {
+    ScopedPhase phase(timers_, "point update");
+    updatePoints();
+  }
+  {
+    ScopedPhase phase(timers_, "constitutive");
+    updateMaterials(dt);
+  }
+  neighbourhoods_.update(model_);
+  timers_.add("search", neighbourhoods_.searchSeconds());
+  timers_.add("shape functions", neighbourhoods_.shapeSeconds());
+  time_ += dt;
+  dt_last_ = dt;
+  ++steps_;
+  {
+    ScopedPhase phase(timers_, "time step");
+    dt_next_ = stableStep();
+  }
+}
+
+// Lumped mass m_a = sum_p N_a m_p, momentum l_a = sum_p N_a m_p v_p and internal force
+// f_a = -sum_p V_p sigma_p grad N_a, each a gather over the node's points in point order.
+void Integrator::assembleNodes() {
+  NodeStore& nodes = model_.nodes;
+  const PointStore& points = model_.points;
+  const Connectivity& conn = model_.connectivity;
+#pragma omp parallel for schedule(static)
+  for (LocalIndex a = 0; a < nodes.owned; ++a) {
+    double m = 0.0;
+    Vec3 l = Vec3::Zero(), f = Vec3::Zero();
+    for (Index k = conn.node_offset[a]; k < conn.node_offset[a + 1]; ++k) {
+      const Index e = conn.node_entry[k];
+      const LocalIndex p = conn.entry_point[e];
+      const double nm = conn.N[e] * points.mass[p];
+      m += nm;
+      l += nm * points.v[p];
+      if (!points.eroded[p]) f.noalias() -= points.volume[p] * (points.stress[p] * conn.dN[e]);
+    }
+    nodes.mass[a] = m;
+    nodes.momentum[a] = l;
+    nodes.force[a] = f;
+  }
+}
+
+void Integrator::updateNodes(double dt, double dt_average) {
+  NodeStore& nodes = model_.nodes;
+  dv_.resize(static_cast<std::size_t>(nodes.size()));
+  du_.resize(static_cast<std::size_t>(nodes.size()));
+#pragma omp parallel for schedule(static)
+  for (LocalIndex a = 0; a < nodes.owned; ++a) {
+    // A node that no point references carries no mass and does not move.
+    if (nodes.mass[a] <= 0.0) {
+      dv_[a].setZero();
+      du_[a].setZero();
+      nodes.v[a].setZero();
+      continue;
+    }
+    const Vec3 v_old = nodes.momentum[a] / nodes.mass[a];
+    Vec3 v_new = v_old + dt_average * nodes.force[a] / nodes.mass[a];
+    for (int i = 0; i < 3; ++i)
+      if (nodes.constrained[a] & (1u << i)) v_new[i] = nodes.prescribed_v[a][i];
+    dv_[a] = v_new - v_old;
+    du_[a] = dt * v_new;
+    nodes.v[a] = v_new;
+    nodes.x[a] += du_[a];
+  }
+}
+
+// Material points follow the nodes (DESIGN.md §2 step 6), written with displacements so that
+// round-off does not grow with the distance from the origin:
+//   x_p += sum_a N_a u_a,  dF = I + sum_a u_a (x) grad N_a,  F <- dF F,  V <- det(dF) V.
+// Velocities take the nodal increment (FLIP-style), which conserves momentum exactly and,
+// unlike re-interpolating the nodal velocity, does not damp the resolved motion.
+void Integrator::updatePoints() {
+  PointStore& points = model_.points;
+  const Connectivity& conn = model_.connectivity;
+  LocalIndex bad = points.owned;
+#pragma omp parallel for schedule(static) reduction(min : bad)
+  for (LocalIndex p = 0; p < points.owned; ++p) {
+    Vec3 dx = Vec3::Zero(), dv = Vec3::Zero();
+    Mat3 dF = Mat3::Identity();
+    for (Index e = conn.offset[p]; e < conn.offset[p + 1]; ++e) {
+      const LocalIndex a = conn.node[e];
+      dx += conn.N[e] * du_[a];
+      dv += conn.N[e] * dv_[a];
+      dF.noalias() += du_[a] * conn.dN[e].transpose();
+    }
+    const double J = dF.determinant();
+    if (!(J > 0.0) || !std::isfinite(J)) bad = std::min(bad, p);
+    points.x[p] += dx;
+    points.v[p] += dv;
+    points.dF[p] = dF;
+    points.F[p] = dF * points.F[p];
+    points.volume[p] *= J;
+  }
+  if (bad < points.owned)
+    failAtPoint(bad, fmt::format("volume inverted or collapsed: det(dF) = {:.6g} over the step",
+                                 points.dF[bad].determinant()));
+}
+
+void Integrator::updateMaterials(double dt) {
+  PointStore& points = model_.points;
+  for (const BodyInfo& body : model_.bodies)
+    model_.materials[body.material]->update(points, body.point_begin, std::min(body.point_end, points.owned), dt);
+  LocalIndex bad = points.owned;
+#pragma omp parallel for schedule(static) reduction(min : bad)
+  for (LocalIndex p = 0; p < points.owned; ++p)
+    if (!points.stress[p].allFinite() || !std::isfinite(points.energy[p]) || !(points.sound_speed[p] > 0.0))
+      bad = std::min(bad, p);
+  if (bad < points.owned) failAtPoint(bad, "the material update gave a non-finite stress, energy or sound speed");
+}
+
+// CFL condition over material points: dt = cfl * min_p h_p / c_p (DESIGN.md §2 step 9).
+double Integrator::stableStep() const {
+  const PointStore& points = model_.points;
+  double dt = std::numeric_limits<double>::infinity();
+#pragma omp parallel for schedule(static) reduction(min : dt)
+  for (LocalIndex p = 0; p < points.owned; ++p)
+    if (!points.eroded[p]) dt = std::min(dt, points.spacing(p) / points.sound_speed[p]);
+  KESSLER_VERIFY(std::isfinite(dt) && dt > 0.0, "no stable time step: every point is eroded or the model is empty");
+  return settings_.cfl * dt;
+}
+
+Energies Integrator::energies() const {
+  const PointStore& points = model_.points;
+  Energies e;
+  e.kinetic = deterministicSum(points.owned, 0.0,
+                               [&](LocalIndex p) { return 0.5 * points.mass[p] * points.v[p].squaredNorm(); });
+  e.internal = deterministicSum(points.owned, 0.0, [&](LocalIndex p) { return points.mass[p] * points.energy[p]; });
+  e.momentum = deterministicSum(points.owned, Vec3(Vec3::Zero()),
+                                [&](LocalIndex p) -> Vec3 { return points.mass[p] * points.v[p]; });
+  return e;
+}
+
+void Integrator::failAtPoint(LocalIndex p, const std::string& what) const {
+  const PointStore& points = model_.points;
+  const Vec3& x = points.x[p];
+  throw NumericalError(fmt::format("step {}, t = {:.6g} s: material point {} of body '{}' at ({:.6g}, {:.6g}, {:.6g}) m: {}",
+                                   steps_ + 1, time_, points.id[p], model_.bodies[points.body[p]].name, x[0], x[1],
+                                   x[2], what));
+}
+
+}  // namespace kessler::otm

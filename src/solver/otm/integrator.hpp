@@ -1,0 +1,61 @@
+#pragma once
+// The explicit OTM integrator (DESIGN.md §2; Li, Habbal & Ortiz, IJNME 83, 2010):
+// nodal mass, momentum and force gathered from material points, the variable-step discrete
+// Euler-Lagrange update of node positions, material points carried by the nodes' motion,
+// constitutive update, new neighbourhoods and shape functions, CFL time step.
+#include "core/timer.hpp"
+#include "solver/otm/model.hpp"
+#include "solver/otm/neighbourhoods.hpp"
+#include "solver/otm/settings.hpp"
+
+namespace kessler::otm {
+
+struct Energies {
+  double kinetic = 0.0;   // 1/2 sum m_p |v_p|^2
+  double internal = 0.0;  // sum m_p e_p
+  Vec3 momentum = Vec3::Zero();
+  double total() const { return kinetic + internal; }
+};
+
+class Integrator {
+ public:
+  Integrator(Model& model, const Settings& settings);
+
+  // Builds shape functions, the initial material state and the first time step.
+  void initialise();
+  // Advances one step of length nextStep() (clipped to end at settings.end_time).
+  void step();
+
+  bool finished() const { return time_ >= settings_.end_time * (1.0 - 1e-12); }
+  double time() const { return time_; }
+  long steps() const { return steps_; }
+  double lastStep() const { return dt_last_; }
+  double nextStep() const { return dt_next_; }
+  double initialStep() const { return dt_initial_; }
+  Energies energies() const;
+  const PhaseTimers& timers() const { return timers_; }
+  const Model& model() const { return model_; }
+  const Settings& settings() const { return settings_; }
+
+ private:
+  void assembleNodes();
+  void updateNodes(double dt, double dt_average);
+  void updatePoints();
+  void updateMaterials(double dt);
+  double stableStep() const;
+  [[noreturn]] void failAtPoint(LocalIndex p, const std::string& what) const;
+
+  Model& model_;
+  Settings settings_;
+  Neighbourhoods neighbourhoods_;
+  std::vector<Vec3> dv_;  // nodal velocity increment of the step (FLIP-style transfer to points)
+  std::vector<Vec3> du_;  // nodal displacement of the step
+  PhaseTimers timers_;
+  double time_ = 0.0;
+  double dt_last_ = 0.0;  // dt_k: the step just taken (0 before the first)
+  double dt_next_ = 0.0;  // dt_k+1
+  double dt_initial_ = 0.0;
+  long steps_ = 0;
+};
+
+}  // namespace kessler::otm

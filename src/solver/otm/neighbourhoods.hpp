@@ -1,0 +1,47 @@
+#pragma once
+// Steps 1-2 of the OTM step (DESIGN.md §2): each material point's node neighbourhood from a
+// cell-list search, with the seizing-contact policy across bodies, and the LME shape
+// functions there. Results go to Model::connectivity in point order, identical for any
+// thread count.
+#include "search/cell_list.hpp"
+#include "solver/otm/model.hpp"
+#include "solver/otm/settings.hpp"
+
+#include <vector>
+
+namespace kessler::otm {
+
+class Neighbourhoods {
+ public:
+  explicit Neighbourhoods(const Settings& settings) : settings_(settings) {}
+
+  // Rebuilds the connectivity of all owned points. Throws NumericalError naming the point if
+  // its shape functions cannot be built (outside the convex hull of its nodes, no nodes).
+  void update(Model& model);
+
+  // Time spent in the search and in the shape functions during the last update.
+  double searchSeconds() const { return search_seconds_; }
+  double shapeSeconds() const { return shape_seconds_; }
+
+ private:
+  struct Scratch {
+    std::vector<LocalIndex> node;   // neighbours of the point being processed
+    std::vector<LocalIndex> rows;   // neighbours of all points of this thread, in order
+    std::vector<double> N;
+    std::vector<Vec3> dN;
+    std::vector<std::pair<LocalIndex, double>> candidates;
+    std::vector<double> nearest_foreign;  // squared distance per body
+    std::vector<Vec3> offsets;
+  };
+
+  // Collects the neighbour nodes of point p into s.node; returns their count.
+  int gather(const Model& model, LocalIndex p, Scratch& s) const;
+
+  Settings settings_;
+  CellList cells_;
+  std::vector<Scratch> scratch_;  // one per thread
+  std::vector<int> count_;
+  double search_seconds_ = 0.0, shape_seconds_ = 0.0;
+};
+
+}  // namespace kessler::otm

@@ -1,0 +1,88 @@
+#include "solver/otm/setup.hpp"
+
+#include "core/error.hpp"
+#include "core/log.hpp"
+
+#include <cmath>
+
+namespace kessler::otm {
+
+int addBody(Model& model, const std::string& name, const MaterialPtr& material,
+            const geometry::Discretisation& mesh, const Vec3& velocity) {
+  KESSLER_VERIFY(material != nullptr, "body '{}' has no material", name);
+  const int body = static_cast<int>(model.bodies.size());
+  int material_index = -1;
+  for (std::size_t m = 0; m < model.materials.size(); ++m)
+    if (model.materials[m] == material) material_index = static_cast<int>(m);
+  if (material_index < 0) {
+    material_index = static_cast<int>(model.materials.size());
+    model.materials.push_back(material);
+  }
+
+  NodeStore& nodes = model.nodes;
+  PointStore& points = model.points;
+  const auto node_begin = static_cast<std::size_t>(nodes.size());
+  const auto point_begin = static_cast<std::size_t>(points.size());
+  nodes.resize(node_begin + mesh.nodes.size());
+  points.resize(point_begin + mesh.points.size());
+
+  for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
+    const std::size_t a = node_begin + i;
+    nodes.id[a] = static_cast<Index>(a);
+    nodes.body[a] = body;
+    nodes.x[a] = mesh.nodes[i];
+    nodes.v[a] = velocity;
+  }
+  const double rho0 = material->referenceDensity();
+  for (std::size_t i = 0; i < mesh.points.size(); ++i) {
+    const std::size_t p = point_begin + i;
+    points.id[p] = static_cast<Index>(p);
+    points.body[p] = body;
+    points.x[p] = mesh.points[i];
+    points.v[p] = velocity;
+    points.volume[p] = points.volume0[p] = mesh.volumes[i];
+    points.mass[p] = rho0 * mesh.volumes[i];
+    points.spacing0[p] = mesh.spacings[i];
+    points.temperature[p] = 293.15;
+  }
+  model.bodies.push_back(BodyInfo{name, material_index, static_cast<LocalIndex>(point_begin), points.size(),
+                                  static_cast<LocalIndex>(node_begin), nodes.size()});
+  return body;
+}
+
+void constrainNode(Model& model, LocalIndex node, int axis, double velocity) {
+  model.nodes.constrained[node] |= static_cast<std::uint8_t>(1u << axis);
+  model.nodes.prescribed_v[node][axis] = velocity;
+}
+
+LocalIndex constrainPlane(Model& model, int axis, double offset, double tolerance, double velocity, int body) {
+  LocalIndex count = 0;
+  for (LocalIndex a = 0; a < model.nodes.size(); ++a) {
+    if (body >= 0 && model.nodes.body[a] != body) continue;
+    if (std::abs(model.nodes.x[a][axis] - offset) > tolerance) continue;
+    constrainNode(model, a, axis, velocity);
+    ++count;
+  }
+  return count;
+}
+
+Model buildModel(const std::vector<BodySetup>& bodies, const std::vector<int>& symmetry_axes) {
+  Model model;
+  for (const BodySetup& setup : bodies) {
+    geometry::MeshRequest request = setup.mesh;
+    request.symmetry_axes = symmetry_axes;
+    const geometry::TetMesh mesh = geometry::meshShape(request);
+    const geometry::Discretisation disc = geometry::discretise(mesh);
+    const int body = addBody(model, setup.name, setup.material, disc, setup.velocity);
+    const LocalIndex first = model.bodies[body].node_begin;
+    for (LocalIndex local : geometry::selectNodes(setup.mesh.shape, disc.nodes, setup.fixed))
+      for (int axis = 0; axis < 3; ++axis) constrainNode(model, first + local, axis);
+    // Nodes on a symmetry plane (Gmsh puts them on the clipping plane up to round-off) keep a
+    // zero normal velocity; a body clear of the plane has none.
+    for (int axis : symmetry_axes) constrainPlane(model, axis, 0.0, 1e-6 * setup.mesh.mesh_size, 0.0, body);
+    log::info("  body {:<14} {:>9} nodes {:>9} points", setup.name, disc.nodes.size(), disc.points.size());
+  }
+  return model;
+}
+
+}  // namespace kessler::otm

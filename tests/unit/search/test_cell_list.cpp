@@ -1,0 +1,56 @@
+#include "search/cell_list.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+namespace kessler {
+namespace {
+
+std::vector<Vec3> randomCloud(int n, unsigned seed, double scale) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-scale, scale);
+  std::vector<Vec3> x(n);
+  for (Vec3& v : x) v = Vec3(u(rng), u(rng), 0.3 * u(rng));
+  return x;
+}
+
+// Oracle: the cell list returns exactly the brute-force neighbours, for radii smaller and
+// larger than the cell size.
+TEST(CellList, MatchesBruteForce) {
+  const std::vector<Vec3> x = randomCloud(3000, 7, 1.0);
+  const std::vector<Vec3> queries = randomCloud(200, 11, 1.2);
+  CellList cells;
+  cells.build(x, static_cast<LocalIndex>(x.size()), 0.1);
+  for (double radius : {0.03, 0.1, 0.27, 0.9}) {
+    for (const Vec3& q : queries) {
+      std::vector<LocalIndex> found;
+      cells.forEachWithin(q, radius, [&](LocalIndex a, double d2) {
+        EXPECT_NEAR(d2, (x[a] - q).squaredNorm(), 1e-15);
+        found.push_back(a);
+      });
+      std::vector<LocalIndex> expected;
+      for (LocalIndex a = 0; a < static_cast<LocalIndex>(x.size()); ++a)
+        if ((x[a] - q).norm() <= radius) expected.push_back(a);
+      std::sort(found.begin(), found.end());
+      ASSERT_EQ(found, expected) << "radius " << radius;
+    }
+  }
+}
+
+// A few far-away positions must not blow the grid up; queries stay correct.
+TEST(CellList, SparseOutliersStayCorrect) {
+  std::vector<Vec3> x = randomCloud(500, 3, 1.0);
+  x.push_back(Vec3(1e4, 0, 0));
+  x.push_back(Vec3(-1e4, 5e3, 2e3));
+  CellList cells;
+  cells.build(x, static_cast<LocalIndex>(x.size()), 0.01);
+  EXPECT_GT(cells.cellSize(), 0.01);
+  int hits = 0;
+  cells.forEachWithin(Vec3(1e4, 0, 0), 1.0, [&](LocalIndex a, double) { hits += a == 500; });
+  EXPECT_EQ(hits, 1);
+}
+
+}  // namespace
+}  // namespace kessler
