@@ -1,6 +1,7 @@
 #pragma once
 // Small fixed-size vector and tensor types used everywhere in Kessler.
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <Eigen/LU>
 
 #include <cstdint>
