@@ -190,7 +190,14 @@ Quantity parse(std::string_view text) {
   std::string_view rest = trim(s.substr(static_cast<std::size_t>(end - s.data())));
   if (rest.empty()) return {number, dimensionless};
   Quantity unit = parseUnit(rest);
+  // Prefix products such as 1e-6 are not exact in binary; when the factor is (the inverse of)
+  // an integer, divide or multiply by that integer so "10 us" is exactly 1e-5 s.
   double value = number * unit.value;
+  const double inverse = 1.0 / unit.value;
+  if (unit.value < 1.0 && std::abs(inverse - std::round(inverse)) < 1e-9 * inverse)
+    value = number / std::round(inverse);
+  else if (std::abs(unit.value - std::round(unit.value)) < 1e-9 * unit.value)
+    value = number * std::round(unit.value);
   if (!std::isfinite(value)) throw InputError(fmt::format("'{}' overflows in SI units", s));
   return {value, unit.dimension};
 }

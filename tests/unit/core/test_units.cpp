@@ -22,6 +22,10 @@ TEST(Units, ParsesCommonImpactQuantities) {
   EXPECT_DOUBLE_EQ(toSI("1e3 1/s", rate), 1e3);
   EXPECT_DOUBLE_EQ(toSI("3 m s^-1", velocity), 3.0);
   EXPECT_DOUBLE_EQ(toSI("-2.5e-3", length), -2.5e-3);  // bare numbers are SI
+  // Exact, not merely close: decks echo these values back.
+  EXPECT_EQ(toSI("10 us", time), 1e-5);
+  EXPECT_EQ(toSI("0.5 mm", length), 5e-4);
+  EXPECT_EQ(toSI("2.7 g/cm^3", density), 2700.0);
 }
 
 TEST(Units, RejectsBadInputWithReason) {

@@ -1,0 +1,179 @@
+#include "io/deck.hpp"
+
+#include "core/error.hpp"
+#include "io/deck_overrides.hpp"
+#include "io/deck_parts.hpp"
+#include "io/yaml_reader.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <optional>
+#include <sstream>
+
+namespace kessler::io {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+MaterialConfig parseMaterial(const std::string& name, const Field& field) {
+  MapField map = field.map({"model", "density", "youngs_modulus", "poisson_ratio"});
+  MaterialConfig material;
+  material.name = name;
+  if (std::optional<Field> model = map.find("model")) {
+    material.model = model->text();
+    if (material.model != "neo-hookean") model->fail("unknown material model (known: neo-hookean)");
+  }
+  NeoHookeanParameters& p = material.neo_hookean;
+  p.density = map.require("density").positive(units::density);
+  p.youngs_modulus = map.require("youngs_modulus").positive(units::pressure);
+  Field poisson = map.require("poisson_ratio");
+  p.poisson_ratio = poisson.quantity(units::dimensionless);
+  if (!(p.poisson_ratio > -1.0 && p.poisson_ratio < 0.5)) poisson.fail("must lie in (-1, 0.5)");
+  // The model's own check stays the authority on what is physical, should it grow stricter.
+  try {
+    p.check();
+  } catch (const InputError& e) {
+    field.failBare(e.what());
+  }
+  return material;
+}
+
+std::vector<MaterialConfig> parseMaterials(const Field& field) {
+  MapField map = field.namedMap();
+  if (map.entries().empty()) field.fail("must define at least one material");
+  std::vector<MaterialConfig> materials;
+  for (const MapField::Entry& entry : map.entries())
+    materials.push_back(parseMaterial(entry.key, entry.value));
+  return materials;
+}
+
+std::vector<int> parseSymmetry(const Field& field) {
+  std::vector<int> axes;
+  for (const Field& item : field.list()) {
+    const std::string name = item.text();
+    const int axis = name == "x" ? 0 : name == "y" ? 1 : name == "z" ? 2 : -1;
+    if (axis < 0) item.fail("must be x, y or z (the normal of a symmetry plane through the origin)");
+    if (std::find(axes.begin(), axes.end(), axis) != axes.end()) item.fail("repeats a symmetry plane");
+    axes.push_back(axis);
+  }
+  return axes;
+}
+
+otm::Settings parseSolver(const Field& field) {
+  MapField map = field.map({"method", "end_time", "cfl", "lme_gamma", "lme_tolerance", "min_neighbours",
+                            "max_steps", "contact_distance"});
+  if (std::optional<Field> method = map.find("method"); method && method->text() != "otm")
+    method->fail("unknown method (known: otm)");
+  otm::Settings s;
+  s.end_time = map.require("end_time").positive(units::time);
+  if (std::optional<Field> cfl = map.find("cfl")) {
+    s.cfl = cfl->quantity(units::dimensionless);
+    if (!(s.cfl > 0.0 && s.cfl <= 1.0)) cfl->fail("must lie in (0, 1]");
+  }
+  if (std::optional<Field> gamma = map.find("lme_gamma")) s.lme_gamma = gamma->positive(units::dimensionless);
+  if (std::optional<Field> tolerance = map.find("lme_tolerance")) {
+    s.lme_tolerance = tolerance->quantity(units::dimensionless);
+    if (!(s.lme_tolerance > 0.0 && s.lme_tolerance < 1.0)) tolerance->fail("must lie in (0, 1)");
+  }
+  // Four nodes at least: a point must lie inside the convex hull of its neighbours in 3D.
+  if (std::optional<Field> neighbours = map.find("min_neighbours"))
+    s.min_neighbours = static_cast<int>(neighbours->integer(4, 10000));
+  if (std::optional<Field> steps = map.find("max_steps"))
+    s.max_steps = steps->integer(0, std::numeric_limits<long>::max());
+  if (std::optional<Field> contact = map.find("contact_distance")) {
+    s.contact_distance = contact->quantity(units::dimensionless);
+    if (s.contact_distance < 0.0) contact->fail("must not be negative");
+  }
+  return s;
+}
+
+OutputConfig parseOutput(const std::optional<Field>& field, double end_time) {
+  OutputConfig output;
+  output.every = end_time / 20.0;
+  if (!field) return output;
+  MapField map = field->map({"every", "dir"});
+  if (std::optional<Field> every = map.find("every")) {
+    output.every = every->quantity(units::time);
+    if (output.every < 0.0) every->fail("must not be negative (0 writes only the first and last states)");
+  }
+  if (std::optional<Field> dir = map.find("dir")) output.dir = dir->text("a folder path");
+  return output;
+}
+
+RunConfig parseTree(const Field& top, const fs::path& base_dir) {
+  MapField deck = top.map({"title", "materials", "bodies", "symmetry", "solver", "output"});
+  RunConfig config;
+  config.deck_path = top.source().file();
+  if (std::optional<Field> title = deck.find("title")) config.title = title->text("a title", true);
+  config.materials = parseMaterials(deck.require("materials"));
+  if (std::optional<Field> symmetry = deck.find("symmetry")) config.symmetry_axes = parseSymmetry(*symmetry);
+  Field bodies = deck.require("bodies");
+  config.bodies = parseBodies(bodies, config.materials, config.symmetry_axes, base_dir);
+  config.solver = parseSolver(deck.require("solver"));
+  config.output = parseOutput(deck.find("output"), config.solver.end_time);
+  checkOverlaps(config.bodies, bodies);
+  checkMemory(config, bodies);
+  return config;
+}
+
+[[noreturn]] void failYaml(const std::string& name, const YAML::Exception& e, std::string_view kind) {
+  const int line = e.mark.is_null() ? 1 : e.mark.line + 1;
+  const int column = e.mark.is_null() ? 1 : e.mark.column + 1;
+  throw InputError(fmt::format("{}:{}:{}: {}: {}", name, line, column, kind, e.msg));
+}
+
+RunConfig parseText(const std::string& text, const std::string& name, const fs::path& base_dir,
+                    const std::vector<std::string>& overrides) {
+  DeckSource source(name);
+  std::vector<YAML::Node> documents;
+  try {
+    documents = YAML::LoadAll(text);
+  } catch (const YAML::Exception& e) {
+    failYaml(name, e, "YAML syntax error");
+  }
+  if (documents.empty() || (documents.size() == 1 && documents[0].IsNull()))
+    throw InputError(fmt::format("{}:1:1: the deck is empty", name));
+  YAML::Node root = documents[0];
+  Field top(source, root, "", root.Mark());
+  if (documents.size() > 1)
+    Field(source, documents[1], "", documents[1].Mark())
+        .failBare("a second YAML document ('---'): a deck is one document");
+  if (!root.IsMap())
+    top.fail("the deck must be a map of sections (title, materials, bodies, symmetry, solver, output)");
+  applyOverrides(root, overrides, source);
+  try {
+    return parseTree(top, base_dir);
+  } catch (const YAML::Exception& e) {
+    failYaml(name, e, "YAML error");
+  }
+}
+
+}  // namespace
+
+RunConfig parseDeckString(const std::string& yaml_text, const std::string& name_for_errors,
+                          const std::vector<std::string>& overrides) {
+  return parseText(yaml_text, name_for_errors, fs::path(name_for_errors).parent_path(), overrides);
+}
+
+RunConfig parseDeck(const fs::path& deck, const std::vector<std::string>& overrides) {
+  const std::string name = deck.string();
+  std::error_code error;
+  const fs::file_status status = fs::status(deck, error);
+  if (!fs::exists(status)) throw InputError(fmt::format("{}: cannot read the deck: no such file", name));
+  if (fs::is_directory(status))
+    throw InputError(fmt::format("{}: cannot read the deck: it is a directory", name));
+  std::ifstream in(deck, std::ios::binary);
+  if (!in) throw InputError(fmt::format("{}: cannot read the deck: {}", name, std::strerror(errno)));
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw InputError(fmt::format("{}: cannot read the deck: read error", name));
+  return parseText(text.str(), name, deck.parent_path(), overrides);
+}
+
+}  // namespace kessler::io
