@@ -104,8 +104,9 @@ Result shapeFunctions(std::span<const Vec3> d, double beta, double h, Vec3& lamb
     moments(d, N, r, J);
   }
   if (result.status != Status::converged) return result;
-  const Eigen::LDLT<Mat3> ldlt(J / h2);
-  for (std::size_t a = 0; a < d.size(); ++a) dN[a] = -N[a] * ldlt.solve(d[a]) / h2;
+  // J is symmetric positive definite here (checked in the iteration): invert it once.
+  const Mat3 j_inverse = J.inverse();
+  for (std::size_t a = 0; a < d.size(); ++a) dN[a] = -N[a] * (j_inverse * d[a]);
   return result;
 }
 

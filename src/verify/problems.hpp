@@ -2,8 +2,14 @@
 // The verification problems, one function each (registered in registry.cpp).
 #include "verify/problem.hpp"
 
+#include <fmt/format.h>
+
 namespace kessler::verify {
 
 Outcome lmeConsistency();
+Outcome waveSpeed();
+Outcome momentum();
+Outcome energy();
+Outcome threadDeterminism();
 
 }  // namespace kessler::verify
