@@ -1,8 +1,8 @@
 #pragma once
-// Local maximum-entropy (LME) shape functions (Arroyo & Ortiz, IJNME 65, 2006):
+// Local maximum-entropy (LME) shape functions (Arroyo & Ortiz, IJNME 65:2167-2202, 2006, §2 and §4):
 //   N_a(x) = exp(-beta |x - x_a|^2 + lambda* . (x - x_a)) / Z(x, lambda*),
-// where lambda* minimises log Z (eq. 19), found by Newton's method with a backtracking line
-// search, warm-started from the previous step's lambda. Gradients (eq. 21):
+// where lambda* minimises log Z, found (§4.2) by Newton's method with a backtracking line
+// search, warm-started from the previous step's lambda. Gradients:
 //   grad N_a = -N_a J^-1 (x - x_a),  J = d^2 log Z / d lambda^2 (the covariance of x - x_a).
 // The identities sum N_a = 1, sum N_a x_a = x, sum grad N_a = 0, sum x_a (x) grad N_a = I hold
 // to the Newton tolerance. A point outside the convex hull of its nodes has no minimiser

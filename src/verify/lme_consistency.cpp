@@ -1,4 +1,4 @@
-// lme-consistency: the LME reproducing identities (Arroyo & Ortiz 2006, eqs. 8, 21) on a
+// lme-consistency: the LME reproducing identities (Arroyo & Ortiz 2006, §2 and §4) on a
 // randomly distorted cloud of nodes: sum N_a = 1, sum N_a x_a = x, sum grad N_a = 0 and
 // sum x_a (x) grad N_a = I. The measured value is the largest violation, made dimensionless
 // with the nodal spacing h; the reference is 0 with an absolute tolerance of 1e-10.

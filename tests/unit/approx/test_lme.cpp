@@ -38,8 +38,8 @@ Evaluated evaluate(const std::vector<Vec3>& nodes, const Vec3& x, double gamma, 
 
 class LmeConsistency : public ::testing::TestWithParam<double> {};
 
-// Partition of unity, linear reproduction and the gradient identities (Arroyo & Ortiz 2006,
-// eqs. 8 and 21) to 1e-10 on a distorted cloud, for several localities gamma.
+// Partition of unity, linear reproduction and the gradient identities (Arroyo & Ortiz 2006, §4),
+// to 1e-10 on a distorted cloud, for several localities gamma.
 TEST_P(LmeConsistency, ReproducesLinearFields) {
   const double gamma = GetParam();
   const double h = 1e-3;
