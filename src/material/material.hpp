@@ -1,8 +1,8 @@
 #pragma once
 // A material law, chosen once per material and run over a whole range of points (never a
 // virtual call per point). It never sees the discretisation: it reads each point's F, dF,
-// volume and internal variables and writes its stress, specific internal energy and
-// longitudinal sound speed.
+// volume and internal variables and writes its stress, specific internal energy, the energy
+// density that drives eigenerosion, and the signal speed for the time step.
 #include "core/types.hpp"
 #include "particles/store.hpp"
 
@@ -16,8 +16,14 @@ class Material {
   virtual ~Material() = default;
   virtual const std::string& name() const = 0;
   virtual double referenceDensity() const = 0;
+  // Critical energy release rate G_c for eigenerosion, J/m^2 (0: the material does not erode).
+  virtual double fractureEnergy() const { return 0.0; }
+  // Poisson's ratio, for the calibration of eigenerosion's energy-release estimate.
+  virtual double poissonRatio() const = 0;
   // Longitudinal wave speed of the undeformed material, sqrt((K + 4G/3)/rho0).
   virtual double referenceSoundSpeed() const = 0;
+  // Sets the initial state of the points [begin, end) (temperature, internal variables).
+  virtual void initialise(PointStore& /*points*/, LocalIndex /*begin*/, LocalIndex /*end*/) const {}
   // Updates the points [begin, end) after their F has been advanced by dF over dt.
   virtual void update(PointStore& points, LocalIndex begin, LocalIndex end, double dt) const = 0;
 };

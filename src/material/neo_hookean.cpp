@@ -12,6 +12,8 @@ void NeoHookeanParameters::check() const {
     throw InputError(fmt::format("youngs_modulus must be positive, got {}", youngs_modulus));
   if (!(poisson_ratio > -1.0 && poisson_ratio < 0.5))
     throw InputError(fmt::format("poisson_ratio must lie in (-1, 0.5), got {}", poisson_ratio));
+  if (!(fracture_energy >= 0.0))
+    throw InputError(fmt::format("fracture_energy must not be negative, got {}", fracture_energy));
 }
 
 NeoHookean::NeoHookean(std::string name, const NeoHookeanParameters& parameters)
@@ -40,7 +42,9 @@ void NeoHookean::update(PointStore& points, LocalIndex begin, LocalIndex end, do
     const Mat3& F = points.F[p];
     const double J = F.determinant();
     points.stress[p] = stress(F);
-    points.energy[p] = energyDensity(F) / rho0;
+    const double w = energyDensity(F);
+    points.energy[p] = w / rho0;
+    points.strain_energy[p] = w;
     // Tangent wave speed of the deformed state: lambda and mu scale like 1/J in the spatial
     // moduli, with an extra (mu - lambda ln J) from the log term; take the larger, safe value.
     const double modulus = (lambda_ + 2.0 * (mu_ - lambda_ * std::log(J))) / J;

@@ -11,6 +11,7 @@ struct NeoHookeanParameters {
   double density = 0.0;          // kg/m^3
   double youngs_modulus = 0.0;   // Pa
   double poisson_ratio = 0.0;
+  double fracture_energy = 0.0;  // G_c for eigenerosion, J/m^2 (0: none)
 
   // Throws kessler::InputError if a parameter is unphysical.
   void check() const;
@@ -27,6 +28,8 @@ class NeoHookean final : public Material {
   const std::string& name() const override { return name_; }
   double referenceDensity() const override { return p_.density; }
   double referenceSoundSpeed() const override;
+  double fractureEnergy() const override { return p_.fracture_energy; }
+  double poissonRatio() const override { return p_.poisson_ratio; }
   void update(PointStore& points, LocalIndex begin, LocalIndex end, double dt) const override;
 
   // Point-wise law, exposed for unit tests.

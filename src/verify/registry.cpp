@@ -1,5 +1,8 @@
 #include "verify/problem.hpp"
+#include "verify/eos_problems.hpp"
+#include "verify/impact_problems.hpp"
 #include "verify/problems.hpp"
+#include "verify/strength_problems.hpp"
 
 namespace kessler::verify {
 
@@ -10,6 +13,16 @@ const std::vector<Problem>& problems() {
       {"momentum", "linear momentum conserved through a collision of two bodies", momentum},
       {"energy", "energy drift of a freely vibrating elastic bar over 5 periods", energy},
       {"thread-determinism", "1 and 2 threads give bitwise identical fields", threadDeterminism},
+      {"eos-mie-gruneisen", "Mie-Gruneisen EOS swept against its formula; c^2 against finite differences",
+       eosMieGruneisen},
+      {"eos-polynomial", "polynomial EOS swept against its formula; c^2 against finite differences", eosPolynomial},
+      {"eos-tillotson", "Tillotson EOS swept against its formula; c^2 against finite differences", eosTillotson},
+      {"eos-tabular", "SESAME table of a Mie-Gruneisen EOS against the analytic EOS", eosTabular},
+      {"radial-return", "log-strain radial return along uniaxial-strain and pure-shear paths against analytic answers",
+       radialReturn},
+      {"flyer-plate", "symmetric Al 6061-T6 plate impact at 2 km/s against the Hugoniot", flyerPlate},
+      {"taylor-bar", "copper Taylor bar: final length and footprint radius", taylorBar},
+      {"griffith", "centre-cracked plate fails at Griffith's stress (eigenerosion)", griffith},
   };
   return all;
 }

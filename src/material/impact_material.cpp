@@ -1,0 +1,167 @@
+#include "material/impact_material.hpp"
+
+#include "core/error.hpp"
+#include "material/strength/damage.hpp"
+#include "material/strength/radial_return.hpp"
+
+#include <cmath>
+
+namespace kessler {
+
+ImpactMaterial::ImpactMaterial(std::string name, ImpactMaterialParameters parameters)
+    : name_(std::move(name)), p_(std::move(parameters)) {
+  if (!(p_.shear_modulus >= 0.0))
+    throw InputError(fmt::format("shear_modulus must not be negative (got {})", p_.shear_modulus));
+  p_.thermal.check();
+  p_.viscosity.check();
+}
+
+double ImpactMaterial::referenceSoundSpeed() const {
+  const double rho0 = referenceDensity();
+  const eos::State s = std::visit([&](const auto& eos) { return eos.evaluate(rho0, 0.0); }, p_.eos);
+  return std::sqrt(s.sound_speed2 + 4.0 * p_.shear_modulus / (3.0 * rho0));
+}
+
+double ImpactMaterial::poissonRatio() const {
+  // From the bulk modulus of the reference state and the shear modulus: nu = (3K - 2G)/(6K + 2G).
+  const double rho0 = referenceDensity();
+  const eos::State s = std::visit([&](const auto& eos) { return eos.evaluate(rho0, 0.0); }, p_.eos);
+  const double K = rho0 * s.sound_speed2, G = p_.shear_modulus;
+  return (3.0 * K - 2.0 * G) / (6.0 * K + 2.0 * G);
+}
+
+void ImpactMaterial::initialise(PointStore& points, LocalIndex begin, LocalIndex end) const {
+  for (LocalIndex p = begin; p < end; ++p) {
+    points.temperature[p] = p_.thermal.room_temperature;
+    points.be[p] = Mat3::Identity();
+  }
+}
+
+namespace {
+
+// Everything one point needs besides its own state: resolved once per range.
+struct UpdateConstants {
+  double dt, shear_modulus, cv, beta, floor, c_linear, c_quadratic;
+  const std::optional<strength::JohnsonCookDamage>* damage;
+};
+
+// One point (DESIGN.md §2 step 7). The deviator comes from the log-strain radial return; the
+// pressure from the equation of state at the new density and an internal energy updated with
+// the work of the step, p dV by a predictor-corrector (trapezoidal rule), the deviatoric work by
+// the midpoint rule; the artificial viscosity q adds to the pressure and its work heats.
+template <typename Eos, typename Law>
+void updatePoint(const Eos& eos, const Law& law, const UpdateConstants& k, PointStore& points, LocalIndex p) {
+  const double m = points.mass[p];
+  const double volume = points.volume[p];
+  const Mat3& dF = points.dF[p];
+  const double j_step = dF.determinant();
+  const double volume_old = volume / j_step;
+  const double rho = m / volume;
+  const double dv = volume - volume_old;
+  const double h = points.spacing(p);
+  const double J = points.F[p].determinant();
+
+  const Mat3 stress_old = points.stress[p];
+  const double q_old = points.viscous_pressure[p];
+  const double p_old = -stress_old.trace() / 3.0 - q_old;
+  const Mat3 s_old = stress_old + (p_old + q_old) * Mat3::Identity();
+
+  // Plain sound speed at the new density and old energy, for the viscosity.
+  const eos::State guess = eos.evaluate(rho, points.energy[p]);
+  const double c_bulk = std::sqrt(std::max(guess.sound_speed2, 0.0) + 4.0 * k.shear_modulus / (3.0 * rho));
+  const double div_v = k.dt > 0.0 ? std::log(j_step) / k.dt : 0.0;
+  const double q = div_v < 0.0 ? rho * (k.c_quadratic * h * h * div_v * div_v - k.c_linear * h * c_bulk * div_v) : 0.0;
+
+  // Deviator by radial return (plastic strain, elastic b_e updated in place).
+  strength::ReturnInput in;
+  in.dF = dF;
+  in.dt = k.dt;
+  in.shear_modulus = k.shear_modulus;
+  in.temperature = points.temperature[p];
+  in.melt_temperature = law.meltingTemperature(J);
+  const strength::ReturnResult r = strength::radialReturnWith(law, in, points.be[p], points.plastic_strain[p]);
+
+  // Rate of deformation over the step by the midpoint rule: D dt = sym(2 (dF - I)(dF + I)^-1).
+  const Mat3 l_dt = 2.0 * (dF - Mat3::Identity()) * (dF + Mat3::Identity()).inverse();
+  const Mat3 d_dt = 0.5 * (l_dt + l_dt.transpose());
+  const Mat3 d_dev = d_dt - d_dt.trace() / 3.0 * Mat3::Identity();
+  const double deviatoric_work = 0.5 * (s_old + r.deviatoric_stress).cwiseProduct(d_dev).sum() * 0.5 * (volume + volume_old);
+  const double viscous_work = -q * dv;
+
+  const double e_old = points.energy[p];
+  const double e_pred = e_old + (-p_old * dv + deviatoric_work + viscous_work) / m;
+  const double p_pred = eos.evaluate(rho, e_pred).pressure;
+  const double e_new = e_old + (-0.5 * (p_old + p_pred) * dv + deviatoric_work + viscous_work) / m;
+  const eos::State state = eos.evaluate(rho, e_new);
+  const double pressure = std::max(state.pressure, k.floor);
+
+  // Heat: the Taylor-Quinney share of plastic work, the viscous work (shock heating), and the
+  // reversible Gruneisen cooling/heating dT = -T Gamma dV/V with Gamma = (dp/de)/rho.
+  const double plastic_heat = k.beta * r.plastic_work * volume;
+  const double gamma = state.dp_de / rho;
+  double T = points.temperature[p];
+  T += (plastic_heat + viscous_work) / (m * k.cv) - T * gamma * std::log(j_step);
+  points.temperature[p] = std::max(T, 0.0);
+
+  double damage = points.damage[p];
+  if (*k.damage && r.plastic_increment > 0.0) {
+    const double sigma_eq = std::sqrt(1.5) * r.deviatoric_stress.norm();
+    const double triaxiality = sigma_eq > 0.0 ? -pressure / sigma_eq : 0.0;
+    const double rate = k.dt > 0.0 ? r.plastic_increment / k.dt : 0.0;
+    damage = std::min(1.0, damage + (*k.damage)->increment(r.plastic_increment, triaxiality, rate, T));
+    points.damage[p] = damage;
+  }
+
+  points.energy[p] = e_new;
+  // Energy density for eigenerosion (per reference volume): elastic deviatoric energy, elastic
+  // volumetric energy in tension only (compression does not open cracks), and the plastic work
+  // (ductile fracture energy); see docs/theory.md.
+  const double bulk = rho * std::max(state.sound_speed2, 0.0);
+  points.plastic_work[p] += r.plastic_work * volume / points.volume0[p];
+  const double tension = pressure < 0.0 && bulk > 0.0 ? pressure * pressure / (2.0 * bulk) : 0.0;
+  const double elastic = k.shear_modulus > 0.0 ? r.deviatoric_stress.squaredNorm() / (4.0 * k.shear_modulus) : 0.0;
+  points.strain_energy[p] = (elastic + tension) * J + points.plastic_work[p];
+  points.viscous_pressure[p] = q;
+  const double c = std::sqrt(std::max(state.sound_speed2, 0.0) + 4.0 * k.shear_modulus / (3.0 * rho));
+  // Signal speed with the viscosity correction of the stable step (e.g. LS-DYNA theory manual):
+  // dt = h / (Q + sqrt(Q^2 + c^2)), Q = C_l c + C_q h |div v| when compressing.
+  const double Q = div_v < 0.0 ? k.c_linear * c + k.c_quadratic * h * std::abs(div_v) : 0.0;
+  points.sound_speed[p] = Q + std::sqrt(Q * Q + c * c);
+  if (damage >= 1.0) {
+    points.eroded[p] = 1;
+    points.stress[p].setZero();
+    return;
+  }
+  points.stress[p] = r.deviatoric_stress - (pressure + q) * Mat3::Identity();
+}
+
+}  // namespace
+
+void ImpactMaterial::update(PointStore& points, LocalIndex begin, LocalIndex end, double dt) const {
+  std::optional<strength::JohnsonCookDamage> damage;
+  if (p_.damage) damage.emplace(*p_.damage);
+  const UpdateConstants k{dt,
+                          p_.shear_modulus,
+                          p_.thermal.specific_heat,
+                          p_.thermal.taylor_quinney,
+                          p_.pressure_floor,
+                          p_.viscosity.linear,
+                          p_.viscosity.quadratic,
+                          &damage};
+  std::visit(
+      [&](const auto& eos, const auto& law) {
+#pragma omp parallel for schedule(static)
+        for (LocalIndex p = begin; p < end; ++p) {
+          if (points.eroded[p]) {
+            // Debris: keeps mass and momentum, carries no stress.
+            points.stress[p].setZero();
+            points.viscous_pressure[p] = 0.0;
+            continue;
+          }
+          updatePoint(eos, law, k, points, p);
+        }
+      },
+      p_.eos, p_.yield);
+}
+
+}  // namespace kessler

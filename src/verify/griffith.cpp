@@ -1,0 +1,96 @@
+// griffith: a centre-cracked elastic plate under slowly increasing tension fails at Griffith's
+// stress. Plate 2W x 2H x t (thin: plane stress) with a through crack of half-length a made of
+// eroded points along y = 0; the edges y = +-H are pulled apart at a slowly ramped speed. The
+// failure stress is the remote stress sigma_yy (mass-averaged over the intact points with
+// |y| > H/2) when the crack first grows (a point eroded beyond the initial tips). Reference:
+//   sigma_c = sqrt(E G_c / (pi a)) / sqrt(sec(pi a / (2W)))
+// (Griffith 1921; finite-width correction of Feddersen 1966). Tolerance 10%.
+#include "core/reduce.hpp"
+#include "verify/fixtures.hpp"
+#include "verify/impact_problems.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace kessler::verify {
+
+GriffithResult runGriffith(int cells_per_half_crack) {
+  const double a = 2e-3;                       // crack half-length
+  const double h = a / cells_per_half_crack;  // cell size
+  const double half_width = 3 * a, half_height = 3 * a, thickness = 2 * h;
+  const double E = 70e9, nu = 0.33, gc = 100.0;
+  auto material = std::make_shared<NeoHookean>(
+      "brittle elastic", NeoHookeanParameters{.density = 2700.0, .youngs_modulus = E, .poisson_ratio = nu,
+                                              .fracture_energy = gc});
+  const int nx = static_cast<int>(std::lround(2 * half_width / h)), ny = static_cast<int>(std::lround(2 * half_height / h));
+  otm::Model model;
+  addBoxBody(model, "plate", {Vec3(-half_width, -half_height, 0), Vec3(half_width, half_height, thickness)}, {nx, ny, 2},
+             Vec3::Zero(), material);
+  // The initial crack: the row of points just above y = 0 over |x| < a.
+  for (LocalIndex p = 0; p < model.points.owned; ++p) {
+    const Vec3& x = model.points.x[p];
+    if (x[1] > 0 && x[1] < h && std::abs(x[0]) < a) model.points.eroded[p] = 1;
+  }
+  const double sigma_ref = std::sqrt(E * gc / (std::numbers::pi * a)) /
+                           std::sqrt(1.0 / std::cos(std::numbers::pi * a / (2 * half_width)));
+  // Load: edge speed ramped linearly so that the Griffith stress is reached after about five
+  // transits of the longitudinal wave across the plate (quasi-static), then held rising.
+  const double c = std::sqrt(E / 2700.0);
+  const double t_fail = 5.0 * 2 * half_height / c;
+  const double strain_fail = sigma_ref / E;
+  // Edge displacement u(t) = u_f (t / t_fail)^2 reaches H strain_fail at t_fail: v(t) = 2 u_f t / t_fail^2.
+  const double u_f = half_height * strain_fail;
+  const double tol = 1e-9 * h;
+  otm::constrainPlane(model, 1, half_height, tol, 0.0);
+  otm::constrainPlane(model, 1, -half_height, tol, 0.0);
+
+  otm::Settings settings;
+  settings.end_time = 2.0 * t_fail;
+  otm::Integrator integrator(model, settings);
+  integrator.initialise();
+  const LocalIndex initial_eroded = static_cast<LocalIndex>(
+      std::count(model.points.eroded.begin(), model.points.eroded.end(), std::uint8_t{1}));
+  GriffithResult r;
+  r.reference = sigma_ref;
+  r.points = model.points.owned;
+  while (!integrator.finished()) {
+    const double v = 2.0 * u_f * (integrator.time() + 0.5 * integrator.nextStep()) / (t_fail * t_fail);
+    for (LocalIndex n = 0; n < model.nodes.owned; ++n) {
+      if (!(model.nodes.constrained[n] & 2u)) continue;
+      model.nodes.prescribed_v[n][1] = model.nodes.x[n][1] > 0 ? v : -v;
+    }
+    integrator.step();
+    const LocalIndex eroded = static_cast<LocalIndex>(
+        std::count(model.points.eroded.begin(), model.points.eroded.end(), std::uint8_t{1}));
+    if (eroded > initial_eroded) {
+      double mass = 0.0, sum = 0.0;
+      for (LocalIndex p = 0; p < model.points.owned; ++p) {
+        if (model.points.eroded[p] || std::abs(model.points.x[p][1]) < 0.5 * half_height) continue;
+        mass += model.points.mass[p];
+        sum += model.points.mass[p] * model.points.stress[p](1, 1);
+      }
+      r.failure_stress = sum / mass;
+      break;
+    }
+  }
+  r.steps = integrator.steps();
+  return r;
+}
+
+Outcome griffith() {
+  const GriffithResult coarse = runGriffith(4);
+  const GriffithResult fine = runGriffith(6);
+  Outcome o;
+  o.name = "griffith";
+  o.quantity = "failure stress (Pa)";
+  o.measured = fine.failure_stress;
+  o.reference = fine.reference;
+  o.tolerance = 0.10;
+  o = compare(o);
+  const double coarse_error = std::abs(coarse.failure_stress / coarse.reference - 1.0);
+  o.note = fmt::format("a/h = 4: {:.4g} Pa ({:.1f}%, {} points); a/h = 6: {} points, {} steps", coarse.failure_stress,
+                       100 * coarse_error, coarse.points, fine.points, fine.steps);
+  return o;
+}
+
+}  // namespace kessler::verify

@@ -1,0 +1,46 @@
+#pragma once
+// Verification problems of the impact materials (whole runs).
+#include "verify/problem.hpp"
+
+#include <fmt/format.h>
+
+namespace kessler::verify {
+
+struct MieGruneisenRef {
+  double rho0, c0, s;
+};
+
+struct FlyerPlateResult {
+  double particle_velocity, shock_speed, pressure;
+  double reference_velocity, reference_shock_speed, reference_pressure;
+  long steps, points;
+};
+
+FlyerPlateResult runFlyerPlate();
+Outcome flyerPlate();
+
+struct TaylorBarResult {
+  double length = 0.0;            // final length, m
+  double footprint_radius = 0.0;  // radius of the impact face, m
+  long steps = 0, points = 0;
+};
+
+// mesh_size in metres; CI uses the coarse default.
+TaylorBarResult runTaylorBar(double mesh_size);
+Outcome taylorBar();
+
+}  // namespace kessler::verify
+
+namespace kessler::verify {
+
+struct GriffithResult {
+  double failure_stress = 0.0;  // remote stress when the crack first grows, Pa (0: never)
+  double reference = 0.0;
+  long steps = 0, points = 0;
+};
+
+// cells_per_half_crack: resolution a/h.
+GriffithResult runGriffith(int cells_per_half_crack);
+Outcome griffith();
+
+}  // namespace kessler::verify
