@@ -3,16 +3,21 @@
 #   tools/dev.sh example   runs the default example into results/
 #   tools/dev.sh test      runs the whole test suite (unit, verification, regression)
 #   tools/dev.sh build     only builds
+#   tools/dev.sh asan      AddressSanitizer + UBSan build (build-asan): unit tests and a short impact
+#   tools/dev.sh fuzz      libFuzzer build with clang (build-fuzz): each fuzzer for KESSLER_FUZZ_SECONDS
+#                          (default 90) on a copy of its seed corpus; fails on any finding
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake ninja-build pkg-config libeigen3-dev libyaml-cpp-dev libfmt-dev libcli11-dev
           libhdf5-dev libgmsh-dev nlohmann-json3-dev googletest libgtest-dev python3 python3-numpy
           python3-h5py python3-matplotlib)
+# Only for `fuzz`: clang with its sanitizer and libFuzzer runtimes, and its OpenMP.
+fuzz_packages=(clang libclang-rt-14-dev libomp-dev)
 
 install_missing() {
   local missing=()
-  for p in "${packages[@]}"; do
+  for p in "$@"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
   done
   [ ${#missing[@]} -eq 0 ] && return
@@ -28,23 +33,77 @@ build() {
   cmake --build build -j"$(nproc)"
 }
 
+# Any sanitizer report fails the program. Gmsh's own small leaks are suppressed (tests/lsan.supp).
+sanitizer_environment() {
+  export ASAN_OPTIONS=detect_leaks=1:strict_string_checks=1:check_initialization_order=1
+  export LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp:print_suppressions=0
+  export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+}
+
+asan() {
+  sanitizer_environment
+  cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DKESSLER_SANITIZE=ON >/dev/null
+  cmake --build build-asan -j"$(nproc)"
+  ctest --test-dir build-asan -L unit --output-on-failure
+  build-asan/src/app/kessler run examples/elastic-sphere-plate.yaml --out build-asan/example-1us \
+    --set solver.end_time="1 us" --set output.every="0.5 us" --quiet
+  echo "asan: unit tests and a 1 us impact ran clean"
+}
+
+fuzz() {
+  sanitizer_environment
+  local seconds=${KESSLER_FUZZ_SECONDS:-90}
+  # Warnings stay warnings here: clang's differ from g++'s, which the main build holds to -Werror.
+  CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DKESSLER_FUZZ=ON \
+    -DKESSLER_WERROR=OFF >/dev/null
+  cmake --build build-fuzz -j"$(nproc)" --target fuzz_deck fuzz_sesame
+  local -A seeds=([deck]="tests/fuzz/corpus/deck tests/data/decks examples"
+                  [sesame]="tests/fuzz/corpus/sesame tests/data/sesame")
+  for target in deck sesame; do
+    # New inputs go to a scratch copy (the first folder); the seed folders are only read.
+    local corpus=build-fuzz/corpus/$target artifacts=build-fuzz/artifacts/$target/
+    mkdir -p "$corpus" "$artifacts"
+    local log=build-fuzz/fuzz_$target.log status=0
+    # shellcheck disable=SC2086
+    build-fuzz/tests/fuzz/fuzz_$target "$corpus" ${seeds[$target]} -dict="tests/fuzz/$target.dict" \
+      -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=8192 -print_final_stats=1 \
+      -artifact_prefix="$artifacts" >"$log" 2>&1 || status=$?
+    grep -E "^(INFO: Seed|#[0-9]+ +DONE|Done [0-9]+ runs|stat::number_of_executed_units|stat::peak_rss)" \
+      "$log" || true
+    if [ "$status" -ne 0 ]; then
+      tail -40 "$log" >&2
+      echo "fuzz_$target found a problem (exit $status): the input is in $artifacts" >&2
+      exit 1
+    fi
+  done
+  echo "fuzz: no findings in ${seconds} s per target"
+}
+
 case "${1:-}" in
   example)
-    install_missing
+    install_missing "${packages[@]}"
     build
     build/src/app/kessler run examples/elastic-sphere-plate.yaml
     ;;
   test)
-    install_missing
+    install_missing "${packages[@]}"
     build
     ctest --test-dir build --output-on-failure
     ;;
   build)
-    install_missing
+    install_missing "${packages[@]}"
     build
     ;;
+  asan)
+    install_missing "${packages[@]}"
+    asan
+    ;;
+  fuzz)
+    install_missing "${packages[@]}" "${fuzz_packages[@]}"
+    fuzz
+    ;;
   *)
-    echo "usage: tools/dev.sh example|test|build" >&2
+    echo "usage: tools/dev.sh example|test|build|asan|fuzz" >&2
     exit 2
     ;;
 esac

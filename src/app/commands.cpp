@@ -1,5 +1,7 @@
 #include "app/commands.hpp"
 
+#include "app/eos_table_command.hpp"
+
 namespace kessler::app {
 
 namespace {
@@ -12,6 +14,7 @@ int exitCode() { return exit_code; }
 void addCommands(CLI::App& app) {
   addRunCommands(app);
   addVerifyCommand(app);
+  addEosTableCommand(app);
 }
 
 }  // namespace kessler::app

@@ -1,122 +1,275 @@
 #include "app/simulation.hpp"
 
 #include "app/progress.hpp"
+#include "app/run_folder.hpp"
+#include "app/signals.hpp"
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "core/timer.hpp"
+#include "io/checkpoint.hpp"
 #include "io/deck.hpp"
 #include "io/fields_writer.hpp"
 #include "io/summary.hpp"
+#include "solver/otm/diagnostics.hpp"
 #include "solver/otm/integrator.hpp"
 #include "solver/otm/setup.hpp"
 
 #include <omp.h>
 
-#include <cmath>
+#include <memory>
+#include <optional>
 
 namespace kessler::app {
 
 namespace {
 
-std::vector<otm::BodySetup> bodySetups(const io::RunConfig& config) {
-  std::vector<MaterialPtr> materials;
-  for (const io::MaterialConfig& m : config.materials)
-    materials.push_back(std::make_shared<NeoHookean>(m.name, m.neo_hookean));
-  std::vector<otm::BodySetup> bodies;
-  for (const io::BodyConfig& b : config.bodies)
-    bodies.push_back({b.name, materials.at(static_cast<std::size_t>(b.material)), b.mesh, b.velocity, b.fixed});
-  return bodies;
+enum class Stop { none, max_steps, signal };
+
+class Run {
+ public:
+  Run(const io::RunConfig& config, const RunOptions& options)
+      : config_(config),
+        options_(options),
+        dir_(config.output.dir),
+        checkpoint_file_(io::checkpointPath(dir_)),
+        diagnostics_(config.solver) {}
+
+  RunOutcome execute();
+
+ private:
+  void start();
+  void resume();
+  void loop();
+  void fail(const NumericalError& e);
+  void remember() {
+    record_.history.push_back(
+        {integrator_->steps(), integrator_->time(), integrator_->lastStep(), integrator_->energies()});
+  }
+  void output();
+  bool checkpointDue() const;
+  void checkpoint();
+  void check() {
+    const otm::StepInfo at{integrator_->steps(), integrator_->time(), integrator_->nextStep(),
+                           integrator_->initialStep()};
+    diagnostics_.check(model_, at, record_.history.front().energies.total());
+  }
+  void finish() {
+    record_.extra_timings["output"] = output_seconds_;
+    record_.extra_timings["checkpoint"] = checkpoint_seconds_;
+    record_.wall_seconds = previous_wall_seconds_ + wall_.seconds();
+    io::writeSummary(dir_ / "summary.json", record_, *integrator_);
+  }
+  void printSummary() const;
+
+  const io::RunConfig& config_;
+  RunOptions options_;
+  std::filesystem::path dir_, checkpoint_file_;
+  Stopwatch wall_, since_checkpoint_;
+  otm::Model model_;
+  std::unique_ptr<otm::Integrator> integrator_;
+  std::unique_ptr<io::FieldWriter> writer_;
+  otm::Diagnostics diagnostics_;
+  io::RunRecord record_;
+  double next_output_ = 0.0, next_checkpoint_ = 0.0;
+  double previous_wall_seconds_ = 0.0, output_seconds_ = 0.0, checkpoint_seconds_ = 0.0;
+  long checkpoint_step_ = -1;  // step of the checkpoint on disk for this run, -1: none yet
+  Stop stop_ = Stop::none;
+};
+
+RunOutcome Run::execute() {
+  const StopSignals signals;
+  if (options_.restart && !std::filesystem::exists(checkpoint_file_))
+    throw InputError(
+        fmt::format("--restart {}: no checkpoint.h5 there (the run stopped before its first "
+                    "checkpoint): start it again from its deck",
+                    dir_.string()));
+  std::filesystem::create_directories(dir_);
+  io::writeResolvedDeck(config_, dir_ / "deck.resolved.yaml");
+  record_.title = config_.title;
+  record_.deck = config_.deck_path;
+  record_.threads = omp_get_max_threads();
+  log::info("kessler: {} ({})", config_.title.empty() ? "untitled run" : config_.title, config_.deck_path);
+  writer_ = std::make_unique<io::FieldWriter>(dir_);
+  if (options_.restart) resume();  // before the try: a bad checkpoint leaves the run folder alone
+  std::optional<Progress> progress;
+  try {
+    if (!options_.restart) start();
+    progress.emplace(config_.solver.end_time, model_.points.owned, options_.progress);
+    while (!integrator_->finished()) {
+      if (config_.solver.max_steps > 0 && integrator_->steps() >= config_.solver.max_steps) {
+        stop_ = Stop::max_steps;
+        break;
+      }
+      if (StopSignals::received() != 0) {
+        stop_ = Stop::signal;
+        break;
+      }
+      loop();
+      progress->update(integrator_->steps(), integrator_->time(), integrator_->lastStep());
+    }
+  } catch (const NumericalError& e) {
+    if (progress) progress->finish(integrator_->steps(), integrator_->time(), integrator_->lastStep());
+    fail(e);
+  }
+  progress->finish(integrator_->steps(), integrator_->time(), integrator_->lastStep());
+
+  // The checkpoint comes before any extra output, so that a restart continues exactly as the run
+  // would have gone on (with the history and output series it would have had).
+  if (checkpoint_step_ != integrator_->steps()) checkpoint();
+  const std::string restart_hint = fmt::format("kessler run --restart {}", dir_.string());
+  if (stop_ == Stop::signal) {
+    const int signal = StopSignals::received();
+    record_.status = "interrupted";
+    record_.message = fmt::format("stopped by {} at step {}, t = {:.6g} s; a checkpoint is in {}", signalName(signal),
+                                  integrator_->steps(), integrator_->time(), checkpoint_file_.string());
+    finish();
+    log::info("kessler: {}; continue with: {}", record_.message, restart_hint);
+    return {dir_, 128 + signal};
+  }
+  if (record_.history.back().step != integrator_->steps()) {
+    remember();
+    output();
+  }
+  if (stop_ == Stop::max_steps) {
+    record_.status = "stopped";
+    record_.message =
+        fmt::format("stopped at solver.max_steps = {} (t = {:.6g} s)", config_.solver.max_steps, integrator_->time());
+    log::info("kessler: {}; continue with: {} --set solver.max_steps=0", record_.message, restart_hint);
+  }
+  finish();
+  printSummary();
+  return {dir_, 0};
 }
 
-void printSummary(const otm::Integrator& integrator, const io::RunRecord& record, const std::filesystem::path& dir) {
-  const otm::Energies& e0 = record.history.front().energies;
-  const otm::Energies& e1 = record.history.back().energies;
-  const double point_steps = static_cast<double>(integrator.steps()) * integrator.model().points.owned;
+// A new run: mesh, initial state, the first output.
+void Run::start() {
+  Stopwatch meshing;
+  log::info("meshing {} bodies", config_.bodies.size());
+  model_ = otm::buildModel(bodySetups(config_), config_.symmetry_axes);
+  record_.extra_timings["meshing"] = meshing.seconds();
+  log::info("model: {} material points, {} nodes; {} threads", model_.points.owned, model_.nodes.owned,
+            record_.threads);
+  integrator_ = std::make_unique<otm::Integrator>(model_, config_.solver);
+  integrator_->initialise();
+  remember();
+  check();
+  output();
+  next_output_ = config_.output.every > 0.0 ? config_.output.every : config_.solver.end_time;
+  next_checkpoint_ = config_.checkpoint.every;
+}
+
+// A restart: the model, the integrator and the run's bookkeeping from the checkpoint.
+void Run::resume() {
+  Stopwatch restoring;
+  const io::Checkpoint c = io::readCheckpoint(checkpoint_file_, model_, deckMaterials(config_));
+  integrator_ = std::make_unique<otm::Integrator>(model_, config_.solver);
+  integrator_->restore(c.integrator);
+  record_.history = c.loop.history;
+  record_.outputs = c.loop.outputs;
+  KESSLER_VERIFY(!record_.history.empty(), "checkpoint '{}' holds no history", checkpoint_file_.string());
+  next_output_ = c.loop.next_output;
+  next_checkpoint_ = c.loop.next_checkpoint;
+  previous_wall_seconds_ = c.loop.wall_seconds;
+  checkpoint_step_ = integrator_->steps();
+  // Outputs written after the checkpoint belong to a future this run recomputes.
+  removeOutputsOutside(dir_, c.loop.point_grids);
+  writer_->restoreSeries(c.loop.point_grids, c.loop.node_grids);
+  io::writeHistory(dir_ / "history.csv", record_.history);
+  record_.extra_timings["restore"] = restoring.seconds();
+  log::info("restarting from {}: step {}, t = {:.6g} s; {} material points, {} nodes; {} threads",
+            checkpoint_file_.string(), integrator_->steps(), integrator_->time(), model_.points.owned,
+            model_.nodes.owned, record_.threads);
+}
+
+void Run::loop() {
+  try {
+    integrator_->step();
+  } catch (const NumericalError& e) {
+    // Failures inside a step (LME, inverted points) happen before the step count moves on.
+    const std::string message = e.what();
+    if (message.starts_with("step ")) throw;
+    throw NumericalError(
+        fmt::format("step {}, t = {:.6g} s: {}", integrator_->steps() + 1, integrator_->time(), message));
+  }
+  check();
+  if (integrator_->time() >= next_output_ * (1.0 - 1e-9) || integrator_->finished()) {
+    remember();
+    output();
+    const double every = config_.output.every > 0.0 ? config_.output.every : config_.solver.end_time;
+    while (next_output_ <= integrator_->time() * (1.0 + 1e-9)) next_output_ += every;
+  }
+  if (!integrator_->finished() && checkpointDue()) checkpoint();
+}
+
+void Run::output() {
+  Stopwatch watch;
+  writer_->write(integrator_->steps(), integrator_->time(), model_.nodes, model_.points);
+  io::writeHistory(dir_ / "history.csv", record_.history);
+  ++record_.outputs;
+  output_seconds_ += watch.seconds();
+}
+
+bool Run::checkpointDue() const {
+  const io::CheckpointConfig& c = config_.checkpoint;
+  return (c.every > 0.0 && integrator_->time() >= next_checkpoint_ * (1.0 - 1e-9)) ||
+         (c.wall_interval > 0.0 && since_checkpoint_.seconds() >= c.wall_interval);
+}
+
+void Run::checkpoint() {
+  Stopwatch watch;
+  const double every = config_.checkpoint.every;
+  if (every > 0.0)
+    while (next_checkpoint_ <= integrator_->time() * (1.0 + 1e-9)) next_checkpoint_ += every;
+  io::Checkpoint c;
+  c.integrator = integrator_->state();
+  c.loop = {next_output_,        next_checkpoint_, previous_wall_seconds_ + wall_.seconds(),
+            record_.outputs,     record_.history,  writer_->pointGrids(),
+            writer_->nodeGrids()};
+  io::writeCheckpoint(checkpoint_file_, model_, c);
+  checkpoint_step_ = integrator_->steps();
+  since_checkpoint_.restart();
+  checkpoint_seconds_ += watch.seconds();
+}
+
+// Keeps what the run had computed: the state at the failure as the last output, for inspection
+// in ParaView. The last checkpoint stays as it was (the last good state to restart from).
+void Run::fail(const NumericalError& e) {
+  record_.status = "failed";
+  record_.message = e.what();
+  std::string where = fmt::format("the state at the failure is the last output in {}", dir_.string());
+  if (integrator_) {
+    remember();
+    output();
+    finish();
+  } else {
+    where = "no state was written";
+  }
+  const std::string last = checkpoint_step_ >= 0 ? fmt::format("the last checkpoint (step {}) is {}", checkpoint_step_,
+                                                               checkpoint_file_.string())
+                                                 : std::string("no checkpoint was written");
+  throw NumericalError(fmt::format("{}; {}; {}", e.what(), where, last));
+}
+
+void Run::printSummary() const {
+  const otm::Energies& e0 = record_.history.front().energies;
+  const otm::Energies& e1 = record_.history.back().energies;
+  const double point_steps = static_cast<double>(integrator_->steps()) * model_.points.owned;
   log::info("{} steps to t = {:.4g} s in {:.1f} s wall ({:.3g} us per material-point step, {} threads)",
-            integrator.steps(), integrator.time(), record.wall_seconds,
-            point_steps > 0 ? 1e6 * record.wall_seconds / point_steps : 0.0, record.threads);
-  log::info("energy: kinetic {:.6g} -> {:.6g} J, internal {:.6g} -> {:.6g} J, total {:.6g} -> {:.6g} J",
-            e0.kinetic, e1.kinetic, e0.internal, e1.internal, e0.total(), e1.total());
+            integrator_->steps(), integrator_->time(), record_.wall_seconds,
+            point_steps > 0 ? 1e6 * record_.wall_seconds / point_steps : 0.0, record_.threads);
+  log::info("energy: kinetic {:.6g} -> {:.6g} J, internal {:.6g} -> {:.6g} J, total {:.6g} -> {:.6g} J", e0.kinetic,
+            e1.kinetic, e0.internal, e1.internal, e0.total(), e1.total());
   log::info("momentum: ({:.6g}, {:.6g}, {:.6g}) -> ({:.6g}, {:.6g}, {:.6g}) kg m/s", e0.momentum[0], e0.momentum[1],
             e0.momentum[2], e1.momentum[0], e1.momentum[1], e1.momentum[2]);
-  log::info("results in {}/ (points.xdmf and nodes.xdmf open in ParaView; summary.json, history.csv)", dir.string());
+  log::info("results in {}/ (points.xdmf and nodes.xdmf open in ParaView; summary.json, history.csv)", dir_.string());
 }
 
 }  // namespace
 
-std::filesystem::path runSimulation(const io::RunConfig& config, const RunOptions& options) {
+RunOutcome runSimulation(const io::RunConfig& config, const RunOptions& options) {
   if (options.threads > 0) omp_set_num_threads(options.threads);
-  Stopwatch wall;
-  const std::filesystem::path dir = config.output.dir;
-  std::filesystem::create_directories(dir);
-  io::writeResolvedDeck(config, dir / "deck.resolved.yaml");
-
-  io::RunRecord record;
-  record.title = config.title;
-  record.deck = config.deck_path;
-  record.threads = omp_get_max_threads();
-  log::info("kessler: {} ({})", config.title.empty() ? "untitled run" : config.title, config.deck_path);
-
-  Stopwatch meshing;
-  log::info("meshing {} bodies", config.bodies.size());
-  otm::Model model = otm::buildModel(bodySetups(config), config.symmetry_axes);
-  record.extra_timings["meshing"] = meshing.seconds();
-  log::info("model: {} material points, {} nodes; {} threads", model.points.owned, model.nodes.owned, record.threads);
-
-  otm::Integrator integrator(model, config.solver);
-  io::FieldWriter writer(dir);
-  double output_seconds = 0.0;
-  auto output = [&] {
-    Stopwatch watch;
-    writer.write(integrator.steps(), integrator.time(), model.nodes, model.points);
-    io::writeHistory(dir / "history.csv", record.history);
-    ++record.outputs;
-    output_seconds += watch.seconds();
-  };
-  auto remember = [&] {
-    record.history.push_back({integrator.steps(), integrator.time(), integrator.lastStep(), integrator.energies()});
-  };
-  auto finish = [&] {
-    record.extra_timings["output"] = output_seconds;
-    record.wall_seconds = wall.seconds();
-    io::writeSummary(dir / "summary.json", record, integrator);
-  };
-
-  Progress progress(config.solver.end_time, model.points.owned, options.progress);
-  try {
-    integrator.initialise();
-    remember();
-    output();
-    const double every = config.output.every > 0.0 ? config.output.every : config.solver.end_time;
-    double next_output = every;
-    while (!integrator.finished()) {
-      if (config.solver.max_steps > 0 && integrator.steps() >= config.solver.max_steps) break;
-      integrator.step();
-      progress.update(integrator.steps(), integrator.time(), integrator.lastStep());
-      if (integrator.time() >= next_output * (1.0 - 1e-9) || integrator.finished()) {
-        remember();
-        output();
-        while (next_output <= integrator.time() * (1.0 + 1e-9)) next_output += every;
-      }
-    }
-    if (record.history.back().step != integrator.steps()) {
-      remember();
-      output();
-    }
-  } catch (const NumericalError& e) {
-    // Keep what the run had computed: the state at the failure, for inspection in ParaView.
-    progress.finish(integrator.steps(), integrator.time(), integrator.lastStep());
-    record.status = "failed";
-    record.message = e.what();
-    remember();
-    output();
-    finish();
-    throw NumericalError(fmt::format("{}; the last state is in {}", e.what(), dir.string()));
-  }
-  progress.finish(integrator.steps(), integrator.time(), integrator.lastStep());
-  finish();
-  printSummary(integrator, record, dir);
-  return dir;
+  Run run(config, options);
+  return run.execute();
 }
 
 }  // namespace kessler::app

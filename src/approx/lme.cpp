@@ -16,31 +16,39 @@ constexpr int max_iterations = 60;
 constexpr double residual_tolerance = 1e-12;
 constexpr double stall_tolerance = 1e-10;
 
-// log Z(lambda) and the normalised weights p_a, with the exponent shifted for stability.
-double logPartition(std::span<const Vec3> d, double beta, const Vec3& lambda, std::span<double> p) {
-  double fmax = -std::numeric_limits<double>::infinity();
-  for (std::size_t a = 0; a < d.size(); ++a) {
-    p[a] = -beta * d[a].squaredNorm() + lambda.dot(d[a]);
-    fmax = std::max(fmax, p[a]);
-  }
+// One pass over the nodes at a given lambda: the normalised weights p_a, log Z, and its
+// gradient r = sum p_a d_a and Hessian J = sum p_a d_a d_a^T - r r^T. The exponent is shifted
+// by an upper bound (beta |d|^2 >= 0, so f_a <= |lambda| max|d|) to avoid a separate max pass.
+double evaluate(std::span<const Vec3> d, double beta, const Vec3& lambda, double shift, std::span<double> p, Vec3& r,
+                Mat3& J) {
   double z = 0.0;
-  for (double& pa : p) {
-    pa = std::exp(pa - fmax);
-    z += pa;
-  }
-  for (double& pa : p) pa /= z;
-  return fmax + std::log(z);
-}
-
-// Gradient r = sum p_a d_a and Hessian J = sum p_a d_a d_a^T - r r^T of log Z.
-void moments(std::span<const Vec3> d, std::span<const double> p, Vec3& r, Mat3& J) {
-  r.setZero();
-  J.setZero();
+  Vec3 s1 = Vec3::Zero();
+  double xx = 0, xy = 0, xz = 0, yy = 0, yz = 0, zz = 0;
   for (std::size_t a = 0; a < d.size(); ++a) {
-    r += p[a] * d[a];
-    J.noalias() += p[a] * d[a] * d[a].transpose();
+    const Vec3& da = d[a];
+    const double w = std::exp(-beta * da.squaredNorm() + lambda.dot(da) - shift);
+    p[a] = w;
+    z += w;
+    s1 += w * da;
+    xx += w * da[0] * da[0];
+    xy += w * da[0] * da[1];
+    xz += w * da[0] * da[2];
+    yy += w * da[1] * da[1];
+    yz += w * da[1] * da[2];
+    zz += w * da[2] * da[2];
   }
-  J -= r * r.transpose();
+  if (!(z > 1e-250)) {
+    // The bound was far above every exponent (a huge lambda): shift by the true maximum.
+    double fmax = -std::numeric_limits<double>::infinity();
+    for (const Vec3& da : d) fmax = std::max(fmax, -beta * da.squaredNorm() + lambda.dot(da));
+    return evaluate(d, beta, lambda, fmax, p, r, J);
+  }
+  const double inv = 1.0 / z;
+  for (double& pa : p) pa *= inv;
+  r = s1 * inv;
+  J << xx, xy, xz, xy, yy, yz, xz, yz, zz;
+  J = J * inv - r * r.transpose();
+  return shift + std::log(z);
 }
 
 }  // namespace
@@ -60,11 +68,11 @@ Result shapeFunctions(std::span<const Vec3> d, double beta, double h, Vec3& lamb
                       std::span<Vec3> dN) {
   Result result;
   if (!lambda.allFinite()) lambda.setZero();
-  // lambda is made dimensionless by h: its natural scale is beta * h ~ gamma / h.
-  double log_z = logPartition(d, beta, lambda, N);
+  double max_d = 0.0;
+  for (const Vec3& da : d) max_d = std::max(max_d, da.norm());
   Vec3 r;
   Mat3 J;
-  moments(d, N, r, J);
+  double log_z = evaluate(d, beta, lambda, lambda.norm() * max_d, N, r, J);
   const double h2 = h * h;
   double previous = std::numeric_limits<double>::infinity();
   for (;;) {
@@ -91,17 +99,20 @@ Result shapeFunctions(std::span<const Vec3> d, double beta, double h, Vec3& lamb
     // Newton step is taken: it converges quadratically.
     double t = 1.0;
     Vec3 trial = lambda + step;
-    double trial_log_z = logPartition(d, beta, trial, N);
+    Vec3 trial_r;
+    Mat3 trial_J;
+    double trial_log_z = evaluate(d, beta, trial, trial.norm() * max_d, N, trial_r, trial_J);
     if (result.residual > 1e-6) {
       while (trial_log_z > log_z + 1e-4 * t * r.dot(step) && t > 1e-10) {
         t *= 0.5;
         trial = lambda + t * step;
-        trial_log_z = logPartition(d, beta, trial, N);
+        trial_log_z = evaluate(d, beta, trial, trial.norm() * max_d, N, trial_r, trial_J);
       }
     }
     lambda = trial;
     log_z = trial_log_z;
-    moments(d, N, r, J);
+    r = trial_r;
+    J = trial_J;
   }
   if (result.status != Status::converged) return result;
   // J is symmetric positive definite here (checked in the iteration): invert it once.

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <tuple>
 #include <utility>
 
 namespace kessler::geometry {
@@ -161,6 +162,57 @@ bool indicesInRange(const TetMesh& mesh) {
   return true;
 }
 
+// Pairs of tets that share a face, each pair once with i < j. Faces are bucketed by their
+// smallest vertex with a counting sort, so the work is O(N); a bucket holds only the few dozen
+// faces around one vertex and is sorted on its own. A face is shared by at most two tets in a
+// valid (manifold) tetrahedral mesh.
+std::vector<std::array<LocalIndex, 2>> faceAdjacency(const TetMesh& mesh) {
+  struct Face {
+    LocalIndex b = 0, c = 0;  // the two larger vertices; the smallest is the bucket
+    LocalIndex tet = 0;
+  };
+  const auto sortedFace = [&mesh](std::size_t e, int omit) {
+    std::array<LocalIndex, 3> f{};
+    int k = 0;
+    for (int i = 0; i < 4; ++i)
+      if (i != omit) f[k++] = mesh.tets[e][i];
+    std::sort(f.begin(), f.end());
+    return f;
+  };
+  std::vector<std::size_t> start(mesh.vertices.size() + 1, 0);
+  for (std::size_t e = 0; e < mesh.tets.size(); ++e)
+    for (int omit = 0; omit < 4; ++omit) ++start[sortedFace(e, omit)[0] + 1];
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) start[v + 1] += start[v];
+  std::vector<Face> faces(start.back());
+  std::vector<std::size_t> cursor(start.begin(), start.end() - 1);
+  for (std::size_t e = 0; e < mesh.tets.size(); ++e) {
+    for (int omit = 0; omit < 4; ++omit) {
+      const auto f = sortedFace(e, omit);
+      faces[cursor[f[0]]++] = Face{f[1], f[2], static_cast<LocalIndex>(e)};
+    }
+  }
+  std::vector<std::array<LocalIndex, 2>> pairs;
+  pairs.reserve(2 * mesh.tets.size());
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+    const auto first = faces.begin() + static_cast<std::ptrdiff_t>(start[v]);
+    const auto last = faces.begin() + static_cast<std::ptrdiff_t>(start[v + 1]);
+    std::sort(first, last, [](const Face& x, const Face& y) {
+      return std::tie(x.b, x.c, x.tet) < std::tie(y.b, y.c, y.tet);
+    });
+    for (auto f = first; f != last;) {
+      auto run = f + 1;
+      while (run != last && run->b == f->b && run->c == f->c) ++run;
+      if (run - f > 2) {
+        throw InputError(fmt::format("the face ({}, {}, {}) is shared by {} tetrahedra (a valid mesh has at most 2)",
+                                     v, f->b, f->c, run - f));
+      }
+      if (run - f == 2) pairs.push_back({f->tet, (f + 1)->tet});
+      f = run;
+    }
+  }
+  return pairs;
+}
+
 }  // namespace
 
 TetMesh meshShape(const MeshRequest& request) {
@@ -214,6 +266,7 @@ Discretisation discretise(const TetMesh& mesh) {
     throw InputError(fmt::format("tetrahedron {} has non-positive volume {:.3g} m^3 (inverted or degenerate)",
                                  first_bad, d.volumes[first_bad]));
   }
+  d.adjacency = faceAdjacency(mesh);
   return d;
 }
 

@@ -37,12 +37,15 @@ struct TetMesh {
 TetMesh meshShape(const MeshRequest& request);
 
 // OTM discretisation of a mesh: nodes = vertices; one material point per tet at its
-// barycentre with its volume, and a spacing h = mean edge length of the tet.
+// barycentre with its volume, and a spacing h = mean edge length of the tet. `adjacency` lists
+// the pairs of points whose tets share a face, each pair once with i < j: the initial
+// connectivity of the material, from which analysis/ reconstructs fragments.
 struct Discretisation {
   std::vector<Vec3> nodes;
   std::vector<Vec3> points;
   std::vector<double> volumes;
   std::vector<double> spacings;
+  std::vector<std::array<LocalIndex, 2>> adjacency;
 };
 
 Discretisation discretise(const TetMesh& mesh);

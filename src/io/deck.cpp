@@ -21,38 +21,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-MaterialConfig parseMaterial(const std::string& name, const Field& field) {
-  MapField map = field.map({"model", "density", "youngs_modulus", "poisson_ratio"});
-  MaterialConfig material;
-  material.name = name;
-  if (std::optional<Field> model = map.find("model")) {
-    material.model = model->text();
-    if (material.model != "neo-hookean") model->fail("unknown material model (known: neo-hookean)");
-  }
-  NeoHookeanParameters& p = material.neo_hookean;
-  p.density = map.require("density").positive(units::density);
-  p.youngs_modulus = map.require("youngs_modulus").positive(units::pressure);
-  Field poisson = map.require("poisson_ratio");
-  p.poisson_ratio = poisson.quantity(units::dimensionless);
-  if (!(p.poisson_ratio > -1.0 && p.poisson_ratio < 0.5)) poisson.fail("must lie in (-1, 0.5)");
-  // The model's own check stays the authority on what is physical, should it grow stricter.
-  try {
-    p.check();
-  } catch (const InputError& e) {
-    field.failBare(e.what());
-  }
-  return material;
-}
-
-std::vector<MaterialConfig> parseMaterials(const Field& field) {
-  MapField map = field.namedMap();
-  if (map.entries().empty()) field.fail("must define at least one material");
-  std::vector<MaterialConfig> materials;
-  for (const MapField::Entry& entry : map.entries())
-    materials.push_back(parseMaterial(entry.key, entry.value));
-  return materials;
-}
-
 std::vector<int> parseSymmetry(const Field& field) {
   std::vector<int> axes;
   for (const Field& item : field.list()) {
@@ -67,7 +35,7 @@ std::vector<int> parseSymmetry(const Field& field) {
 
 otm::Settings parseSolver(const Field& field) {
   MapField map = field.map({"method", "end_time", "cfl", "lme_gamma", "lme_tolerance", "min_neighbours",
-                            "max_steps", "contact_distance"});
+                            "max_steps", "contact_distance", "min_dt_fraction", "max_energy_growth"});
   if (std::optional<Field> method = map.find("method"); method && method->text() != "otm")
     method->fail("unknown method (known: otm)");
   otm::Settings s;
@@ -90,6 +58,12 @@ otm::Settings parseSolver(const Field& field) {
     s.contact_distance = contact->quantity(units::dimensionless);
     if (s.contact_distance < 0.0) contact->fail("must not be negative");
   }
+  if (std::optional<Field> fraction = map.find("min_dt_fraction")) {
+    s.min_dt_fraction = fraction->quantity(units::dimensionless);
+    if (!(s.min_dt_fraction >= 0.0 && s.min_dt_fraction < 1.0)) fraction->fail("must lie in [0, 1) (0: no check)");
+  }
+  if (std::optional<Field> growth = map.find("max_energy_growth"))
+    s.max_energy_growth = growth->positive(units::dimensionless);
   return s;
 }
 
@@ -106,17 +80,34 @@ OutputConfig parseOutput(const std::optional<Field>& field, double end_time) {
   return output;
 }
 
+CheckpointConfig parseCheckpoint(const std::optional<Field>& field, double end_time) {
+  CheckpointConfig checkpoint;
+  checkpoint.every = end_time / 10.0;
+  if (!field) return checkpoint;
+  MapField map = field->map({"every", "wall_interval"});
+  if (std::optional<Field> every = map.find("every")) {
+    checkpoint.every = every->quantity(units::time);
+    if (checkpoint.every < 0.0) every->fail("must not be negative (0: no checkpoints by simulated time)");
+  }
+  if (std::optional<Field> wall = map.find("wall_interval")) {
+    checkpoint.wall_interval = wall->quantity(units::time);
+    if (checkpoint.wall_interval < 0.0) wall->fail("must not be negative (0: no checkpoints by wall time)");
+  }
+  return checkpoint;
+}
+
 RunConfig parseTree(const Field& top, const fs::path& base_dir) {
-  MapField deck = top.map({"title", "materials", "bodies", "symmetry", "solver", "output"});
+  MapField deck = top.map({"title", "materials", "bodies", "symmetry", "solver", "output", "checkpoint"});
   RunConfig config;
   config.deck_path = top.source().file();
   if (std::optional<Field> title = deck.find("title")) config.title = title->text("a title", true);
-  config.materials = parseMaterials(deck.require("materials"));
+  config.materials = parseMaterials(deck.require("materials"), base_dir);
   if (std::optional<Field> symmetry = deck.find("symmetry")) config.symmetry_axes = parseSymmetry(*symmetry);
   Field bodies = deck.require("bodies");
   config.bodies = parseBodies(bodies, config.materials, config.symmetry_axes, base_dir);
   config.solver = parseSolver(deck.require("solver"));
   config.output = parseOutput(deck.find("output"), config.solver.end_time);
+  config.checkpoint = parseCheckpoint(deck.find("checkpoint"), config.solver.end_time);
   checkOverlaps(config.bodies, bodies);
   checkMemory(config, bodies);
   return config;
@@ -125,7 +116,7 @@ RunConfig parseTree(const Field& top, const fs::path& base_dir) {
 [[noreturn]] void failYaml(const std::string& name, const YAML::Exception& e, std::string_view kind) {
   const int line = e.mark.is_null() ? 1 : e.mark.line + 1;
   const int column = e.mark.is_null() ? 1 : e.mark.column + 1;
-  throw InputError(fmt::format("{}:{}:{}: {}: {}", name, line, column, kind, e.msg));
+  throw InputError(printable(fmt::format("{}:{}:{}: {}: {}", name, line, column, kind, e.msg)));
 }
 
 RunConfig parseText(const std::string& text, const std::string& name, const fs::path& base_dir,
@@ -145,7 +136,7 @@ RunConfig parseText(const std::string& text, const std::string& name, const fs::
     Field(source, documents[1], "", documents[1].Mark())
         .failBare("a second YAML document ('---'): a deck is one document");
   if (!root.IsMap())
-    top.fail("the deck must be a map of sections (title, materials, bodies, symmetry, solver, output)");
+    top.fail("the deck must be a map of sections (title, materials, bodies, symmetry, solver, output, checkpoint)");
   applyOverrides(root, overrides, source);
   try {
     return parseTree(top, base_dir);
@@ -170,10 +161,17 @@ RunConfig parseDeck(const fs::path& deck, const std::vector<std::string>& overri
     throw InputError(fmt::format("{}: cannot read the deck: it is a directory", name));
   std::ifstream in(deck, std::ios::binary);
   if (!in) throw InputError(fmt::format("{}: cannot read the deck: {}", name, std::strerror(errno)));
-  std::ostringstream text;
-  text << in.rdbuf();
+  // A deck is a few KiB of text: read at most a bound, so that the wrong file given (a mesh, a
+  // device such as /dev/zero) is refused instead of filling the memory.
+  constexpr std::streamsize max_deck_bytes = 16 << 20;
+  std::string text(static_cast<std::size_t>(max_deck_bytes) + 1, '\0');
+  in.read(text.data(), max_deck_bytes + 1);
   if (in.bad()) throw InputError(fmt::format("{}: cannot read the deck: read error", name));
-  return parseText(text.str(), name, deck.parent_path(), overrides);
+  if (in.gcount() > max_deck_bytes)
+    throw InputError(fmt::format("{}:1:1: more than {} MiB, too large for a deck: is it the right file?", name,
+                                 max_deck_bytes >> 20));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  return parseText(text, name, deck.parent_path(), overrides);
 }
 
 }  // namespace kessler::io

@@ -8,6 +8,11 @@
 
 namespace kessler::io {
 
+// Parses the `materials` map: neo-Hookean solids and impact materials (library entries, overrides and
+// explicit eos/strength/failure/thermal/viscosity blocks; docs/deck.md). Tabular EOS files are
+// resolved relative to `base_dir`.
+std::vector<MaterialConfig> parseMaterials(const Field& materials, const std::filesystem::path& base_dir);
+
 // Parses the `bodies` list and checks each body on its own (shape, sizes, refinement zone, fixed
 // faces, the part kept by the symmetry planes) and that names are unique. Mesh files are resolved
 // relative to `base_dir`.

@@ -1,8 +1,14 @@
+#include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/deck.hpp"
+#include "io/material_keys.hpp"
 
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <concepts>
+#include <string>
 
 namespace kessler::io {
 
@@ -41,6 +47,65 @@ void shape(YAML::Emitter& out, const geometry::Shape& shape) {
   out << YAML::EndMap << YAML::EndMap;
 }
 
+template <typename P, std::size_t N>
+void block(YAML::Emitter& out, const char* name, const char* model, const P& p,
+           const material_keys::Key<P> (&table)[N]) {
+  out << YAML::Key << name << YAML::Value << YAML::BeginMap;
+  if (model != nullptr) out << YAML::Key << "model" << YAML::Value << model;
+  for (const material_keys::Key<P>& key : table) scalar(out, key.name, p.*(key.member), key.unit);
+  out << YAML::EndMap;
+}
+
+// A tabular EOS is written as the file (absolute, as the parser resolved it) and material it came from.
+void tabularEos(YAML::Emitter& out, const eos::Tabular& table) {
+  out << YAML::Key << "eos" << YAML::Value << YAML::BeginMap;
+  out << YAML::Key << "model" << YAML::Value << "tabular";
+  out << YAML::Key << "file" << YAML::Value << table.parameters().file;
+  out << YAML::Key << "material_id" << YAML::Value << table.parameters().material_id;
+  out << YAML::EndMap;
+}
+
+void impactMaterial(YAML::Emitter& out, const MaterialConfig& material) {
+  namespace keys = material_keys;
+  const ImpactMaterialParameters& p = material.impact;
+  out << YAML::Key << "model" << YAML::Value << "impact";
+  if (!material.library.empty())
+    out << YAML::Comment(fmt::format("library entry {}, every parameter written out", material.library));
+  scalar(out, "density", eos::referenceDensity(p.eos), "kg/m^3");
+  scalar(out, "shear_modulus", p.shear_modulus, "Pa");
+
+  const char* eos_model = keys::eos_models[p.eos.index()];
+  if (const auto* mg = std::get_if<eos::MieGruneisen>(&p.eos))
+    block(out, "eos", eos_model, mg->parameters(), keys::mie_gruneisen);
+  else if (const auto* polynomial = std::get_if<eos::Polynomial>(&p.eos))
+    block(out, "eos", eos_model, polynomial->parameters(), keys::polynomial);
+  else if (const auto* tillotson = std::get_if<eos::Tillotson>(&p.eos))
+    block(out, "eos", eos_model, tillotson->parameters(), keys::tillotson);
+  else
+    tabularEos(out, std::get<eos::Tabular>(p.eos));
+
+  const char* strength_model = keys::strength_models[p.yield.index()];
+  if (const auto* linear = std::get_if<strength::LinearHardening>(&p.yield))
+    block(out, "strength", strength_model, linear->parameters(), keys::linear_hardening);
+  else if (const auto* power_law = std::get_if<strength::PowerLaw>(&p.yield))
+    block(out, "strength", strength_model, power_law->parameters(), keys::power_law);
+  else if (const auto* johnson_cook = std::get_if<strength::JohnsonCook>(&p.yield))
+    block(out, "strength", strength_model, johnson_cook->parameters(), keys::johnson_cook);
+  else
+    out << YAML::Key << "strength" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "model"
+        << YAML::Value << strength_model << YAML::EndMap;
+
+  if (p.damage)
+    block(out, "failure", "johnson-cook", *p.damage, keys::johnson_cook_damage);
+  else
+    out << YAML::Key << "failure" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "model"
+        << YAML::Value << "none" << YAML::EndMap;
+  block(out, "thermal", nullptr, p.thermal, keys::thermal);
+  // No tension cut-off is the default, and infinity has no deck spelling.
+  if (std::isfinite(p.pressure_floor)) scalar(out, "tension_cutoff", p.pressure_floor, "Pa");
+  block(out, "viscosity", nullptr, p.viscosity, keys::viscosity);
+}
+
 void body(YAML::Emitter& out, const BodyConfig& body, const RunConfig& config) {
   out << YAML::BeginMap;
   out << YAML::Key << "name" << YAML::Value << body.name;
@@ -72,10 +137,14 @@ std::string resolvedDeckText(const RunConfig& config) {
   out << YAML::Key << "materials" << YAML::Value << YAML::BeginMap;
   for (const MaterialConfig& material : config.materials) {
     out << YAML::Key << material.name << YAML::Value << YAML::BeginMap;
-    out << YAML::Key << "model" << YAML::Value << material.model;
-    scalar(out, "density", material.neo_hookean.density, "kg/m^3");
-    scalar(out, "youngs_modulus", material.neo_hookean.youngs_modulus, "Pa");
-    scalar(out, "poisson_ratio", material.neo_hookean.poisson_ratio, "");
+    if (material.model == "impact") {
+      impactMaterial(out, material);
+    } else {
+      out << YAML::Key << "model" << YAML::Value << material.model;
+      scalar(out, "density", material.neo_hookean.density, "kg/m^3");
+      scalar(out, "youngs_modulus", material.neo_hookean.youngs_modulus, "Pa");
+      scalar(out, "poisson_ratio", material.neo_hookean.poisson_ratio, "");
+    }
     out << YAML::EndMap;
   }
   out << YAML::EndMap;
@@ -98,11 +167,18 @@ std::string resolvedDeckText(const RunConfig& config) {
   out << YAML::Key << "min_neighbours" << YAML::Value << s.min_neighbours;
   out << YAML::Key << "max_steps" << YAML::Value << s.max_steps << YAML::Comment("0: no limit");
   scalar(out, "contact_distance", s.contact_distance, "times the point spacing");
+  scalar(out, "min_dt_fraction", s.min_dt_fraction, "of the initial time step; 0: no check");
+  scalar(out, "max_energy_growth", s.max_energy_growth, "relative to the initial total energy");
   out << YAML::EndMap;
 
   out << YAML::Key << "output" << YAML::Value << YAML::BeginMap;
   scalar(out, "every", config.output.every, "s");
   out << YAML::Key << "dir" << YAML::Value << config.output.dir;
+  out << YAML::EndMap;
+
+  out << YAML::Key << "checkpoint" << YAML::Value << YAML::BeginMap;
+  scalar(out, "every", config.checkpoint.every, "s of simulated time; 0: never");
+  scalar(out, "wall_interval", config.checkpoint.wall_interval, "s of wall time; 0: never");
   out << YAML::EndMap;
 
   out << YAML::EndMap;

@@ -163,4 +163,11 @@ void FieldWriter::write(long step, double time, const NodeStore& nodes, const Po
   node_grids_ = std::move(node_grids);
 }
 
+void FieldWriter::restoreSeries(std::vector<XdmfGrid> point_grids, std::vector<XdmfGrid> node_grids) {
+  writeTextAtomically(dir_ / "points.xdmf", temporalPolyvertexXdmf("points", point_grids));
+  writeTextAtomically(dir_ / "nodes.xdmf", temporalPolyvertexXdmf("nodes", node_grids));
+  point_grids_ = std::move(point_grids);
+  node_grids_ = std::move(node_grids);
+}
+
 }  // namespace kessler::io

@@ -22,6 +22,12 @@ class FieldWriter {
 
   const std::filesystem::path& directory() const { return dir_; }
 
+  // The outputs the XDMF files list, for a checkpoint; restoreSeries() takes them back after a
+  // restart and rewrites both XDMF files, so that the series continues where the checkpoint was.
+  const std::vector<XdmfGrid>& pointGrids() const { return point_grids_; }
+  const std::vector<XdmfGrid>& nodeGrids() const { return node_grids_; }
+  void restoreSeries(std::vector<XdmfGrid> point_grids, std::vector<XdmfGrid> node_grids);
+
  private:
   std::filesystem::path dir_;
   std::vector<XdmfGrid> point_grids_;

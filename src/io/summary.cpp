@@ -42,7 +42,13 @@ void writeSummary(const std::filesystem::path& file, const RunRecord& record, co
       {"title", record.title},
       {"deck", record.deck},
       {"status", record.status},
-      {"problem", {{"points", model.points.owned}, {"nodes", model.nodes.owned}, {"bodies", bodies}}},
+      {"problem",
+       {{"points", model.points.owned},
+        {"nodes", model.nodes.owned},
+        {"mean_neighbours", model.points.owned > 0 ? static_cast<double>(model.connectivity.node.size()) /
+                                                         static_cast<double>(model.points.owned)
+                                                   : 0.0},
+        {"bodies", bodies}}},
       {"threads", record.threads},
       {"steps", integrator.steps()},
       {"simulated_time_s", integrator.time()},

@@ -89,9 +89,25 @@ Field& Field::operator=(const Field& other) {
   return *this;
 }
 
+std::string printable(std::string_view text) {
+  std::string out;
+  for (char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '\n')
+      out += "\\n";
+    else if (byte < 0x20 || byte == 0x7f)
+      out += fmt::format("\\x{:02x}", byte);
+    else
+      out += c;
+  }
+  return out;
+}
+
 void Field::failBare(std::string_view what) const {
-  throw InputError(
-      fmt::format("{}: {}: {}", source_->where(mark_, path_), path_.empty() ? "top level" : path_, what));
+  // Keys and values are quoted as written; a binary file must not put control characters (or a
+  // second line) into the one-line message.
+  throw InputError(printable(
+      fmt::format("{}: {}: {}", source_->where(mark_, path_), path_.empty() ? "top level" : path_, what)));
 }
 
 void Field::fail(std::string_view what) const {
@@ -139,8 +155,12 @@ Vec3 Field::vector(units::Dimension dimension) const {
 long Field::integer(long min, long max) const {
   double value = quantity(units::dimensionless);
   if (value != std::floor(value)) fail("must be a whole number");
-  if (value < static_cast<double>(min) || value > static_cast<double>(max)) {
-    if (max == std::numeric_limits<long>::max()) fail(fmt::format("must be at least {}", min));
+  // 2^63 and above do not fit a long (converting them is undefined), though max as a double may
+  // round up to 2^63.
+  constexpr double long_limit = 9223372036854775808.0;
+  if (value < static_cast<double>(min) || !(value < long_limit) || static_cast<long>(value) > max) {
+    if (max == std::numeric_limits<long>::max() && value < static_cast<double>(min))
+      fail(fmt::format("must be at least {}", min));
     fail(fmt::format("must lie between {} and {}", min, max));
   }
   return static_cast<long>(value);

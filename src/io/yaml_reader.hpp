@@ -40,6 +40,9 @@ class DeckSource {
 // shortened if long.
 std::string describeNode(const YAML::Node& node);
 
+// `text` with control characters escaped (a newline as \n, others as \xNN), for one-line messages.
+std::string printable(std::string_view text);
+
 // "a" + "b" -> "a.b", "" + "b" -> "b".
 std::string childPath(std::string_view parent, std::string_view key);
 

@@ -33,6 +33,11 @@ void PointStore::resize(std::size_t n) {
   sound_speed.resize(n, 0.0);
   plastic_strain.resize(n, 0.0);
   temperature.resize(n, 0.0);
+  damage.resize(n, 0.0);
+  strain_energy.resize(n, 0.0);
+  plastic_work.resize(n, 0.0);
+  viscous_pressure.resize(n, 0.0);
+  be.resize(n, Mat3::Identity());
   eroded.resize(n, 0);
   lambda.resize(n, Vec3::Zero());
   owned = static_cast<LocalIndex>(n);

@@ -3,6 +3,8 @@
 #include "core/error.hpp"
 #include "core/reduce.hpp"
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -10,12 +12,14 @@
 namespace kessler::otm {
 
 Integrator::Integrator(Model& model, const Settings& settings)
-    : model_(model), settings_(settings), neighbourhoods_(settings) {
+    : model_(model), settings_(settings), neighbourhoods_(settings), erosion_(settings) {
   KESSLER_VERIFY(settings.cfl > 0.0 && settings.cfl <= 1.0, "cfl must lie in (0, 1], got {}", settings.cfl);
   KESSLER_VERIFY(settings.end_time > 0.0, "end_time must be positive, got {}", settings.end_time);
 }
 
 void Integrator::initialise() {
+  for (const BodyInfo& body : model_.bodies)
+    model_.materials[body.material]->initialise(model_.points, body.point_begin, std::min(body.point_end, model_.points.owned));
   {
     ScopedPhase phase(timers_, "constitutive");
     updateMaterials(0.0);
@@ -24,6 +28,14 @@ void Integrator::initialise() {
   timers_.add("search", neighbourhoods_.searchSeconds());
   timers_.add("shape functions", neighbourhoods_.shapeSeconds());
   dt_next_ = dt_initial_ = stableStep();
+}
+
+void Integrator::restore(const IntegratorState& state) {
+  time_ = state.time;
+  dt_last_ = state.dt_last;
+  dt_next_ = state.dt_next;
+  dt_initial_ = state.dt_initial;
+  steps_ = state.steps;
 }
 
 void Integrator::step() {
@@ -45,6 +57,10 @@ void Integrator::step() {
   {
     ScopedPhase phase(timers_, "constitutive");
     updateMaterials(dt);
+  }
+  {
+    ScopedPhase phase(timers_, "erosion");
+    eroded_ += erosion_.apply(model_);
   }
   neighbourhoods_.update(model_);
   timers_.add("search", neighbourhoods_.searchSeconds());
@@ -84,6 +100,7 @@ void Integrator::assembleNodes() {
 
 void Integrator::updateNodes(double dt, double dt_average) {
   NodeStore& nodes = model_.nodes;
+  dt_step_ = dt;
   dv_.resize(static_cast<std::size_t>(nodes.size()));
   du_.resize(static_cast<std::size_t>(nodes.size()));
 #pragma omp parallel for schedule(static)
@@ -99,6 +116,11 @@ void Integrator::updateNodes(double dt, double dt_average) {
     Vec3 v_new = v_old + dt_average * nodes.force[a] / nodes.mass[a];
     for (int i = 0; i < 3; ++i)
       if (nodes.constrained[a] & (1u << i)) v_new[i] = nodes.prescribed_v[a][i];
+    // A rigid wall stops the normal motion that would carry the node through it.
+    for (const RigidWall& wall : settings_.walls) {
+      const double gap = nodes.x[a][wall.axis] - wall.position;
+      if (wall.side * (gap + dt * v_new[wall.axis]) < 0.0) v_new[wall.axis] = -gap / dt;
+    }
     dv_[a] = v_new - v_old;
     du_[a] = dt * v_new;
     nodes.v[a] = v_new;
@@ -117,6 +139,12 @@ void Integrator::updatePoints() {
   LocalIndex bad = points.owned;
 #pragma omp parallel for schedule(static) reduction(min : bad)
   for (LocalIndex p = 0; p < points.owned; ++p) {
+    if (points.eroded[p]) {
+      // Debris: ballistic flight with the point's own velocity.
+      points.x[p] += dt_step_ * points.v[p];
+      points.dF[p].setIdentity();
+      continue;
+    }
     Vec3 dx = Vec3::Zero(), dv = Vec3::Zero();
     Mat3 dF = Mat3::Identity();
     for (Index e = conn.offset[p]; e < conn.offset[p + 1]; ++e) {
@@ -150,13 +178,21 @@ void Integrator::updateMaterials(double dt) {
   if (bad < points.owned) failAtPoint(bad, "the material update gave a non-finite stress, energy or sound speed");
 }
 
-// CFL condition over material points: dt = cfl * min_p h_p / c_p (DESIGN.md §2 step 9).
+// CFL condition over material points: dt = cfl * min_p l_p / c_p (DESIGN.md §2 step 9). The
+// length l_p is the reference spacing times the smallest principal stretch of F: plastic flow
+// keeps the volume (so h0 J^(1/3) would not shrink) while it can flatten the material, and the
+// nodes, to a fraction of their spacing in one direction.
 double Integrator::stableStep() const {
   const PointStore& points = model_.points;
   double dt = std::numeric_limits<double>::infinity();
 #pragma omp parallel for schedule(static) reduction(min : dt)
-  for (LocalIndex p = 0; p < points.owned; ++p)
-    if (!points.eroded[p]) dt = std::min(dt, points.spacing(p) / points.sound_speed[p]);
+  for (LocalIndex p = 0; p < points.owned; ++p) {
+    if (points.eroded[p]) continue;
+    Eigen::SelfAdjointEigenSolver<Mat3> eigen;
+    eigen.computeDirect(points.F[p].transpose() * points.F[p], Eigen::EigenvaluesOnly);
+    const double stretch = std::sqrt(std::max(eigen.eigenvalues()[0], 0.0));
+    dt = std::min(dt, points.spacing0[p] * stretch / points.sound_speed[p]);
+  }
   KESSLER_VERIFY(std::isfinite(dt) && dt > 0.0, "no stable time step: every point is eroded or the model is empty");
   return settings_.cfl * dt;
 }

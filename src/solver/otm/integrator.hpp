@@ -4,6 +4,7 @@
 // Euler-Lagrange update of node positions, material points carried by the nodes' motion,
 // constitutive update, new neighbourhoods and shape functions, CFL time step.
 #include "core/timer.hpp"
+#include "solver/otm/eigenerosion.hpp"
 #include "solver/otm/model.hpp"
 #include "solver/otm/neighbourhoods.hpp"
 #include "solver/otm/settings.hpp"
@@ -17,18 +18,33 @@ struct Energies {
   double total() const { return kinetic + internal; }
 };
 
+// The integrator's own scalar state; with the Model (connectivity included) it is the complete
+// state of a run, which is what a checkpoint holds.
+struct IntegratorState {
+  double time = 0.0;
+  double dt_last = 0.0;
+  double dt_next = 0.0;
+  double dt_initial = 0.0;
+  long steps = 0;
+};
+
 class Integrator {
  public:
   Integrator(Model& model, const Settings& settings);
 
   // Builds shape functions, the initial material state and the first time step.
   void initialise();
+  // Continues from a checkpoint instead of initialise(): the model (with its connectivity)
+  // has been restored; the run then proceeds bitwise as it would have without interruption.
+  void restore(const IntegratorState& state);
+  IntegratorState state() const { return {time_, dt_last_, dt_next_, dt_initial_, steps_}; }
   // Advances one step of length nextStep() (clipped to end at settings.end_time).
   void step();
 
   bool finished() const { return time_ >= settings_.end_time * (1.0 - 1e-12); }
   double time() const { return time_; }
   long steps() const { return steps_; }
+  LocalIndex erodedPoints() const { return eroded_; }
   double lastStep() const { return dt_last_; }
   double nextStep() const { return dt_next_; }
   double initialStep() const { return dt_initial_; }
@@ -48,14 +64,17 @@ class Integrator {
   Model& model_;
   Settings settings_;
   Neighbourhoods neighbourhoods_;
+  Eigenerosion erosion_;
   std::vector<Vec3> dv_;  // nodal velocity increment of the step (FLIP-style transfer to points)
   std::vector<Vec3> du_;  // nodal displacement of the step
+  double dt_step_ = 0.0;  // length of the step in progress
   PhaseTimers timers_;
   double time_ = 0.0;
   double dt_last_ = 0.0;  // dt_k: the step just taken (0 before the first)
   double dt_next_ = 0.0;  // dt_k+1
   double dt_initial_ = 0.0;
   long steps_ = 0;
+  LocalIndex eroded_ = 0;  // points eroded so far
 };
 
 }  // namespace kessler::otm

@@ -4,6 +4,7 @@
 #include "particles/connectivity.hpp"
 #include "particles/store.hpp"
 
+#include <array>
 #include <vector>
 
 namespace kessler::otm {
@@ -14,6 +15,9 @@ struct Model {
   std::vector<BodyInfo> bodies;
   std::vector<MaterialPtr> materials;  // indexed by BodyInfo::material
   Connectivity connectivity;            // point-node neighbourhoods and shape functions
+  // Pairs of points (global indices, i < j) whose initial tets share a face; fragments are the
+  // connected components of intact material over these links (analysis/fragments.hpp).
+  std::vector<std::array<LocalIndex, 2>> adjacency;
 };
 
 }  // namespace kessler::otm

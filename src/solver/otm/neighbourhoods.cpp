@@ -7,17 +7,18 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace kessler::otm {
 
-int Neighbourhoods::gather(const Model& model, LocalIndex p, Scratch& s) const {
+int Neighbourhoods::gather(const Model& model, LocalIndex p, double scale, Scratch& s) const {
   const NodeStore& nodes = model.nodes;
   const PointStore& points = model.points;
   const double h = points.spacing(p);
   const int own = points.body[p];
   const double contact2 = settings_.contact_distance * settings_.contact_distance * h * h;
-  double radius = lme::cutoffRadius(settings_.lme_gamma, h, settings_.lme_tolerance);
+  double radius = scale * lme::cutoffRadius(settings_.lme_gamma, h, settings_.lme_tolerance);
   for (int attempt = 0;; ++attempt) {
     s.candidates.clear();
     cells_.forEachWithin(points.x[p], radius,
@@ -76,29 +77,38 @@ void Neighbourhoods::update(Model& model) {
     LocalIndex my_failed = np;
     lme::Result my_failure;
     for (LocalIndex p = begin; p < end; ++p) {
-      const int n = gather(model, p, s);
-      count_[p] = n;
-      shape_watch.restart();
-      s.offsets.resize(static_cast<std::size_t>(n));
-      for (int i = 0; i < n; ++i) s.offsets[i] = points.x[p] - nodes.x[s.node[i]];
-      const std::size_t first = s.N.size();
-      s.N.resize(first + static_cast<std::size_t>(n));
-      s.dN.resize(first + static_cast<std::size_t>(n));
-      std::span<double> N(s.N.data() + first, static_cast<std::size_t>(n));
-      std::span<Vec3> dN(s.dN.data() + first, static_cast<std::size_t>(n));
-      const double h = points.spacing(p);
-      const double beta = lme::beta(settings_.lme_gamma, h);
-      lme::Result r = lme::shapeFunctions(s.offsets, beta, h, points.lambda[p], N, dN);
-      if (r.status != lme::Status::converged) {
-        points.lambda[p].setZero();  // the warm start may be what failed
-        r = lme::shapeFunctions(s.offsets, beta, h, points.lambda[p], N, dN);
+      // Eroded points are debris flying ballistically: no neighbourhood, no shape functions.
+      if (points.eroded[p]) {
+        count_[p] = 0;
+        continue;
       }
+      // A point near a strongly compressed or re-entrant surface can fall outside the hull of
+      // the nodes within its cut-off: retry from lambda = 0 with a larger radius before failing.
+      int n = 0;
+      lme::Result r;
+      const std::size_t first = s.N.size();
+      for (int attempt = 0; attempt < 4; ++attempt) {
+        const double scale = attempt == 0 ? 1.0 : std::pow(1.5, attempt);
+        n = gather(model, p, scale, s);
+        shape_watch.restart();
+        s.offsets.resize(static_cast<std::size_t>(n));
+        for (int i = 0; i < n; ++i) s.offsets[i] = points.x[p] - nodes.x[s.node[i]];
+        s.N.resize(first + static_cast<std::size_t>(n));
+        s.dN.resize(first + static_cast<std::size_t>(n));
+        std::span<double> N(s.N.data() + first, static_cast<std::size_t>(n));
+        std::span<Vec3> dN(s.dN.data() + first, static_cast<std::size_t>(n));
+        const double h = points.spacing(p);
+        if (attempt > 0) points.lambda[p].setZero();  // the warm start may be what failed
+        r = lme::shapeFunctions(s.offsets, lme::beta(settings_.lme_gamma, h), h, points.lambda[p], N, dN);
+        my_shape_time += shape_watch.seconds();
+        if (r.status == lme::Status::converged) break;
+      }
+      count_[p] = n;
       if (r.status != lme::Status::converged && my_failed == np) {
         my_failed = p;
         my_failure = r;
       }
       all_nodes.insert(all_nodes.end(), s.node.begin(), s.node.end());
-      my_shape_time += shape_watch.seconds();
     }
 #pragma omp barrier
 #pragma omp single

@@ -34,8 +34,9 @@ class Neighbourhoods {
     std::vector<Vec3> offsets;
   };
 
-  // Collects the neighbour nodes of point p into s.node; returns their count.
-  int gather(const Model& model, LocalIndex p, Scratch& s) const;
+  // Collects the neighbour nodes of point p within `scale` times its cut-off radius into
+  // s.node; returns their count.
+  int gather(const Model& model, LocalIndex p, double scale, Scratch& s) const;
 
   Settings settings_;
   CellList cells_;

@@ -1,6 +1,16 @@
 #pragma once
 // Settings of the OTM integrator, filled from the deck (or by a verification problem).
+#include <vector>
+
 namespace kessler::otm {
+
+// A frictionless rigid wall, the plane x[axis] = position: nodes stay on the side `side`
+// (+1: x[axis] >= position, -1: x[axis] <= position) and slide freely along it.
+struct RigidWall {
+  int axis = 2;
+  double position = 0.0;
+  int side = 1;
+};
 
 struct Settings {
   double end_time = 0.0;        // s
@@ -9,10 +19,19 @@ struct Settings {
   double lme_tolerance = 1e-6;  // shape functions below this are cut off: r = h sqrt(-ln tol / gamma)
   int min_neighbours = 12;      // enlarge the search radius until at least this many nodes
   long max_steps = 0;           // 0: no limit
+  // Failure diagnosis (solver/otm/diagnostics.hpp): the run stops when the time step falls below
+  // min_dt_fraction of the initial one, or the total energy exceeds (1 + max_energy_growth) times
+  // the initial total energy.
+  double min_dt_fraction = 1e-3;
+  double max_energy_growth = 0.1;
   // Seizing contact (DESIGN.md §1): the nodes of another body join a point's neighbourhood
   // only when that body's nearest node lies within contact_distance * h of the point. A point
   // sits about h/4 inside its own surface, so 1.0 couples across a gap of roughly h/2.
   double contact_distance = 1.0;
+  std::vector<RigidWall> walls;
+  // Eigenerosion (DESIGN.md §2 step 8): radius of the ball B_eps as a multiple of the point
+  // spacing h.
+  double erosion_radius = 2.0;
 };
 
 }  // namespace kessler::otm

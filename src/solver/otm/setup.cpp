@@ -45,6 +45,13 @@ int addBody(Model& model, const std::string& name, const MaterialPtr& material,
     points.spacing0[p] = mesh.spacings[i];
     points.temperature[p] = 293.15;
   }
+  const auto offset = static_cast<LocalIndex>(point_begin);
+  for (const auto& [i, j] : mesh.adjacency) {
+    KESSLER_VERIFY(i >= 0 && i < j && static_cast<std::size_t>(j) < mesh.points.size(),
+                   "body '{}': adjacency pair ({}, {}) is not ordered within its {} points", name, i, j,
+                   mesh.points.size());
+    model.adjacency.push_back({offset + i, offset + j});
+  }
   model.bodies.push_back(BodyInfo{name, material_index, static_cast<LocalIndex>(point_begin), points.size(),
                                   static_cast<LocalIndex>(node_begin), nodes.size()});
   return body;

@@ -1,0 +1,37 @@
+#pragma once
+// Eigenerosion (Pandolfi & Ortiz, IJNME 92:694, 2012; in OTM: Li, Pandolfi & Ortiz, 2015),
+// DESIGN.md §2 step 8. A material point p erodes, irreversibly, when the energy-release rate
+// estimated over the ball B_eps(x_p) of intact points of its body reaches G_c:
+//   G_p = (C_eps / m_p^eps) sum_{q in B_eps} m_q W_q,   m_p^eps = sum_{q in B_eps} m_q.
+// C_eps is calibrated so that a straight crack front releases exactly G_c: averaging the
+// mode-I near-tip energy density (plane stress) over a ball of radius eps centred on the front
+// gives <W> = 3 (5 - 3 nu) K^2 / (64 E eps), hence C_eps = 64 eps / (3 (5 - 3 nu)) makes
+// G_p = K^2 / E = G_c exactly at Griffith's load (docs/theory.md §8).
+// An eroded point keeps its mass and momentum (debris), carries no stress and flies ballistically.
+#include "search/cell_list.hpp"
+#include "solver/otm/model.hpp"
+#include "solver/otm/settings.hpp"
+
+#include <vector>
+
+namespace kessler::otm {
+
+// C_eps for a ball of radius eps and Poisson's ratio nu.
+double erosionCalibration(double eps, double nu);
+
+class Eigenerosion {
+ public:
+  explicit Eigenerosion(const Settings& settings) : settings_(settings) {}
+  // Evaluates G_p for every intact point of an eroding material and erodes those with
+  // G_p >= G_c. Decisions use the state before this call, so the result does not depend on the
+  // thread count. Returns the number of points eroded.
+  LocalIndex apply(Model& model);
+  bool active(const Model& model) const;
+
+ private:
+  Settings settings_;
+  CellList cells_;
+  std::vector<std::uint8_t> erode_;
+};
+
+}  // namespace kessler::otm

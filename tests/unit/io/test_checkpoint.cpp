@@ -1,0 +1,217 @@
+// Checkpoints: a written and re-read model is bitwise the same, a run continued from a checkpoint
+// is bitwise the same as one that never stopped, and files that are not complete checkpoints of
+// this run are refused with a message.
+#include "core/error.hpp"
+#include "geometry/structured_mesh.hpp"
+#include "io/checkpoint.hpp"
+#include "io/fields_writer.hpp"
+#include "io/hdf5_reader.hpp"
+#include "material/neo_hookean.hpp"
+#include "solver/otm/integrator.hpp"
+#include "solver/otm/setup.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+namespace kessler::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+MaterialPtr aluminium() {
+  NeoHookeanParameters p;
+  p.density = 2700.0;
+  p.youngs_modulus = 70e9;
+  p.poisson_ratio = 0.33;
+  return std::make_shared<NeoHookean>("al", p);
+}
+
+// A block moving into a resting block, so that contact couples the bodies within a few steps.
+otm::Model twoBlocks(const MaterialPtr& material) {
+  otm::Model model;
+  auto add = [&](const char* name, const geometry::Box& box, const Vec3& v) {
+    const geometry::Discretisation disc = geometry::discretise(geometry::structuredBoxMesh(box, {3, 3, 2}));
+    otm::addBody(model, name, material, disc, v);
+  };
+  add("plate", geometry::Box{Vec3(0, 0, -2e-3), Vec3(3e-3, 3e-3, 0)}, Vec3::Zero());
+  add("flyer", geometry::Box{Vec3(0, 0, 0.2e-3), Vec3(3e-3, 3e-3, 2.2e-3)}, Vec3(0, 0, -500.0));
+  otm::constrainNode(model, 0, 2);
+  return model;
+}
+
+otm::Settings settings() {
+  otm::Settings s;
+  s.end_time = 1e-5;
+  return s;
+}
+
+template <class T>
+long differing(const std::vector<T>& a, const std::vector<T>& b) {
+  if (a.size() != b.size()) return static_cast<long>(std::max(a.size(), b.size()) + 1);
+  long count = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) count += std::memcmp(&a[i], &b[i], sizeof(T)) != 0;
+  return count;
+}
+
+long differences(const otm::Model& a, const otm::Model& b) {
+  const PointStore &p = a.points, &q = b.points;
+  const NodeStore &m = a.nodes, &n = b.nodes;
+  return differing(p.id, q.id) + differing(p.body, q.body) + differing(p.x, q.x) + differing(p.v, q.v) +
+         differing(p.mass, q.mass) + differing(p.volume, q.volume) + differing(p.volume0, q.volume0) +
+         differing(p.spacing0, q.spacing0) + differing(p.F, q.F) + differing(p.dF, q.dF) +
+         differing(p.stress, q.stress) + differing(p.energy, q.energy) + differing(p.sound_speed, q.sound_speed) +
+         differing(p.plastic_strain, q.plastic_strain) + differing(p.temperature, q.temperature) +
+         differing(p.damage, q.damage) + differing(p.strain_energy, q.strain_energy) +
+         differing(p.plastic_work, q.plastic_work) + differing(p.viscous_pressure, q.viscous_pressure) +
+         differing(p.be, q.be) + differing(p.eroded, q.eroded) + differing(p.lambda, q.lambda) + differing(m.id, n.id) +
+         differing(m.body, n.body) + differing(m.x, n.x) + differing(m.v, n.v) + differing(m.mass, n.mass) +
+         differing(m.momentum, n.momentum) + differing(m.force, n.force) + differing(m.constrained, n.constrained) +
+         differing(m.prescribed_v, n.prescribed_v) + differing(a.connectivity.offset, b.connectivity.offset) +
+         differing(a.connectivity.node, b.connectivity.node) + differing(a.connectivity.N, b.connectivity.N) +
+         differing(a.connectivity.dN, b.connectivity.dN) +
+         differing(a.connectivity.node_offset, b.connectivity.node_offset) +
+         differing(a.connectivity.node_entry, b.connectivity.node_entry) +
+         differing(a.connectivity.entry_point, b.connectivity.entry_point);
+}
+
+class CheckpointTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           fmt::format("kessler_checkpoint_{}", ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path dir_;
+  MaterialPtr material_ = aluminium();
+};
+
+RunLoopState someLoopState(const otm::Integrator& integrator) {
+  RunLoopState loop;
+  loop.next_output = 1.25e-6;
+  loop.next_checkpoint = 3e-6;
+  loop.wall_seconds = 12.5;
+  loop.outputs = 2;
+  loop.history.push_back({0, 0.0, 0.0, integrator.energies()});
+  loop.history.push_back({integrator.steps(), integrator.time(), integrator.lastStep(), integrator.energies()});
+  XdmfGrid grid{.name = "points_00000000", .time = 0.1, .vertices = 3, .geometry = {}, .attributes = {}};
+  grid.geometry = xdmfItem<double>({3, 3}, "fields/fields_00000000.h5:/points/position");
+  grid.attributes.push_back(
+      {"eroded", "Scalar", xdmfItem<std::uint8_t>({3}, "fields/fields_00000000.h5:/points/eroded")});
+  loop.point_grids = {grid};
+  loop.node_grids = {grid, grid};
+  return loop;
+}
+
+TEST_F(CheckpointTest, RestoresTheModelAndTheRunStateBitwise) {
+  otm::Model model = twoBlocks(material_);
+  otm::Integrator integrator(model, settings());
+  integrator.initialise();
+  for (int i = 0; i < 5; ++i) integrator.step();
+  const Checkpoint written{integrator.state(), someLoopState(integrator)};
+  writeCheckpoint(dir_ / "checkpoint.h5", model, written);
+  EXPECT_FALSE(fs::exists(dir_ / "checkpoint.h5.tmp"));
+
+  otm::Model restored;
+  const Checkpoint read = readCheckpoint(dir_ / "checkpoint.h5", restored, {material_});
+  EXPECT_EQ(differences(model, restored), 0);
+  ASSERT_EQ(restored.bodies.size(), 2u);
+  EXPECT_EQ(restored.bodies[1].name, "flyer");
+  EXPECT_EQ(restored.bodies[1].point_begin, model.bodies[1].point_begin);
+  EXPECT_EQ(restored.materials.at(0), material_);
+  EXPECT_EQ(read.integrator.steps, 5);
+  EXPECT_EQ(std::memcmp(&read.integrator, &written.integrator, sizeof(otm::IntegratorState)), 0);
+  EXPECT_EQ(read.loop.next_output, written.loop.next_output);
+  EXPECT_EQ(read.loop.next_checkpoint, written.loop.next_checkpoint);
+  EXPECT_EQ(read.loop.outputs, 2);
+  ASSERT_EQ(read.loop.history.size(), 2u);
+  EXPECT_EQ(read.loop.history[1].step, 5);
+  EXPECT_EQ(std::memcmp(&read.loop.history[1].energies, &written.loop.history[1].energies, sizeof(otm::Energies)), 0);
+  EXPECT_EQ(temporalPolyvertexXdmf("p", read.loop.point_grids), temporalPolyvertexXdmf("p", written.loop.point_grids));
+  EXPECT_EQ(read.loop.node_grids.size(), 2u);
+}
+
+TEST_F(CheckpointTest, ARestartedRunIsBitwiseTheUninterruptedRun) {
+  otm::Model straight = twoBlocks(material_);
+  otm::Integrator a(straight, settings());
+  a.initialise();
+  for (int i = 0; i < 6; ++i) a.step();
+
+  otm::Model first = twoBlocks(material_);
+  otm::Integrator b(first, settings());
+  b.initialise();
+  for (int i = 0; i < 3; ++i) b.step();
+  writeCheckpoint(dir_ / "checkpoint.h5", first, {b.state(), someLoopState(b)});
+
+  otm::Model resumed;
+  const Checkpoint c = readCheckpoint(dir_ / "checkpoint.h5", resumed, {material_});
+  otm::Integrator r(resumed, settings());
+  r.restore(c.integrator);
+  for (int i = 0; i < 3; ++i) r.step();
+  EXPECT_EQ(differences(straight, resumed), 0);
+  const otm::IntegratorState sa = a.state(), sr = r.state();
+  EXPECT_EQ(std::memcmp(&sa, &sr, sizeof(otm::IntegratorState)), 0);
+}
+
+std::string errorOf(const fs::path& file, const std::vector<MaterialPtr>& materials) {
+  otm::Model model;
+  try {
+    readCheckpoint(file, model, materials);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST_F(CheckpointTest, RefusesWhatIsNotACompleteCheckpointOfThisRun) {
+  otm::Model model = twoBlocks(material_);
+  otm::Integrator integrator(model, settings());
+  integrator.initialise();
+  const fs::path file = dir_ / "checkpoint.h5";
+  writeCheckpoint(file, model, {integrator.state(), someLoopState(integrator)});
+
+  EXPECT_NE(errorOf(dir_ / "none.h5", {material_}).find("no such file"), std::string::npos);
+  // A material the deck no longer has.
+  NeoHookeanParameters p;
+  p.density = 1000.0;
+  p.youngs_modulus = 1e9;
+  p.poisson_ratio = 0.3;
+  EXPECT_NE(errorOf(file, {std::make_shared<NeoHookean>("rubber", p)}).find("material 'al' is not in the run's deck"),
+            std::string::npos);
+  // A field output is an HDF5 file, but not a checkpoint.
+  FieldWriter(dir_).write(0, 0.0, model.nodes, model.points);
+  EXPECT_NE(errorOf(dir_ / "fields/fields_00000000.h5", {material_}).find("is not a Kessler checkpoint"),
+            std::string::npos);
+  // A file cut short, as a copy interrupted by a full disk would leave it.
+  const std::uintmax_t size = fs::file_size(file);
+  fs::copy_file(file, dir_ / "cut.h5");
+  fs::resize_file(dir_ / "cut.h5", size / 2);
+  EXPECT_NE(errorOf(dir_ / "cut.h5", {material_}).find("cut.h5"), std::string::npos);
+  // Garbage.
+  std::ofstream(dir_ / "garbage.h5") << "not hdf5 at all";
+  EXPECT_NE(errorOf(dir_ / "garbage.h5", {material_}).find("cannot open the file"), std::string::npos);
+}
+
+TEST_F(CheckpointTest, AFailedWriteKeepsThePreviousCheckpoint) {
+  otm::Model model = twoBlocks(material_);
+  otm::Integrator integrator(model, settings());
+  integrator.initialise();
+  const fs::path file = dir_ / "checkpoint.h5";
+  writeCheckpoint(file, model, {integrator.state(), someLoopState(integrator)});
+  // A store whose fields disagree in length cannot be written; the old file must survive.
+  otm::Model broken = model;
+  broken.points.energy.pop_back();
+  EXPECT_THROW(writeCheckpoint(file, broken, {integrator.state(), someLoopState(integrator)}), Error);
+  EXPECT_FALSE(fs::exists(dir_ / "checkpoint.h5.tmp"));
+  otm::Model restored;
+  EXPECT_NO_THROW(readCheckpoint(file, restored, {material_}));
+  EXPECT_EQ(differences(model, restored), 0);
+}
+
+}  // namespace
+}  // namespace kessler::io

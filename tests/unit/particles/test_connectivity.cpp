@@ -1,0 +1,41 @@
+#include "particles/connectivity.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace kessler {
+namespace {
+
+// The transpose lists, for every node, exactly the entries that reference it, in increasing
+// point order (the order the deterministic nodal gathers rely on).
+TEST(Connectivity, TransposeListsEveryEntryInPointOrder) {
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<int> count(1, 9), node(0, 49);
+  Connectivity c;
+  c.offset.push_back(0);
+  for (int p = 0; p < 200; ++p) {
+    const int n = count(rng);
+    for (int k = 0; k < n; ++k) c.node.push_back(node(rng));
+    c.offset.push_back(static_cast<Index>(c.node.size()));
+  }
+  c.buildTranspose(50);
+  ASSERT_EQ(c.node_offset.back(), static_cast<Index>(c.node.size()));
+  std::vector<int> seen(c.node.size(), 0);
+  for (LocalIndex a = 0; a < 50; ++a) {
+    LocalIndex previous = -1;
+    for (Index k = c.node_offset[a]; k < c.node_offset[a + 1]; ++k) {
+      const Index e = c.node_entry[k];
+      EXPECT_EQ(c.node[e], a);
+      EXPECT_GE(c.entry_point[e], previous);
+      EXPECT_GE(e, c.offset[c.entry_point[e]]);
+      EXPECT_LT(e, c.offset[c.entry_point[e] + 1]);
+      previous = c.entry_point[e];
+      ++seen[e];
+    }
+  }
+  for (int s : seen) EXPECT_EQ(s, 1);
+}
+
+}  // namespace
+}  // namespace kessler
