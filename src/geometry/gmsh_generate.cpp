@@ -1,5 +1,6 @@
 // Tetrahedral meshing of analytic shapes with Gmsh's OpenCASCADE kernel.
 #include "core/error.hpp"
+#include "core/overloaded.hpp"
 #include "geometry/gmsh_backend.hpp"
 
 #include <gmsh.h>
@@ -9,11 +10,6 @@
 namespace kessler::geometry::detail {
 
 namespace {
-
-template <class... Ts>
-struct Overloaded : Ts... {
-  using Ts::operator()...;
-};
 
 // OpenCASCADE tolerances are absolute (1e-8 by default) and Gmsh's meshers behave best on
 // unit-sized models: a 5 mm sphere built in metres meshes ~5x slower and differently. So the

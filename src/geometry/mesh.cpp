@@ -1,6 +1,7 @@
 #include "geometry/mesh.hpp"
 
 #include "core/error.hpp"
+#include "core/overloaded.hpp"
 #include "geometry/gmsh_backend.hpp"
 
 #include <Eigen/Geometry>  // cross products; core/types.hpp has only Core and LU
@@ -15,11 +16,6 @@
 namespace kessler::geometry {
 
 namespace {
-
-template <class... Ts>
-struct Overloaded : Ts... {
-  using Ts::operator()...;
-};
 
 bool positiveFinite(double x) { return std::isfinite(x) && x > 0.0; }
 

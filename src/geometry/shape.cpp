@@ -1,6 +1,7 @@
 #include "geometry/shape.hpp"
 
 #include "core/error.hpp"
+#include "core/overloaded.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -8,11 +9,6 @@
 namespace kessler::geometry {
 
 namespace {
-
-template <class... Ts>
-struct Overloaded : Ts... {
-  using Ts::operator()...;
-};
 
 bool cylinderContains(const Cylinder& c, const Vec3& x, double margin) {
   const double height = c.axis.norm();

@@ -9,13 +9,14 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <span>
 
 namespace kessler::io {
 namespace {
 
 // Bumped whenever the layout changes; an older or newer checkpoint is refused with a message.
-constexpr std::int64_t format_version = 1;
+constexpr std::int64_t format_version = 2;
 
 // Vec3 and Mat3 are stored as runs of 3 and 9 doubles, straight from the store.
 static_assert(sizeof(Vec3) == 3 * sizeof(double));
@@ -79,6 +80,11 @@ template <>
 struct Layout<Vec3> {
   using Scalar = double;
   static constexpr hsize_t components = 3;
+};
+template <>
+struct Layout<std::array<LocalIndex, 2>> {
+  using Scalar = LocalIndex;
+  static constexpr hsize_t components = 2;
 };
 template <>
 struct Layout<Mat3> {
@@ -209,6 +215,12 @@ void writeCheckpoint(const std::filesystem::path& file, const otm::Model& model,
   writeArray(h5, "/connectivity/N", conn.N);
   writeArray(h5, "/connectivity/dN", conn.dN);
 
+  // Fragment links (analysis): the initial mesh adjacency and its lengths, which a restarted run
+  // could not rebuild from the deformed state.
+  h5.createGroup("/adjacency");
+  writeArray(h5, "/adjacency/pairs", model.adjacency);
+  writeArray(h5, "/adjacency/length0", model.adjacency_length0);
+
   h5.createGroup("/run");
   writeHistoryRows(h5, loop.history);
   const std::string meta = checkpointMetaText(model, loop);
@@ -263,6 +275,14 @@ Checkpoint readCheckpoint(const std::filesystem::path& file, otm::Model& model,
   readArray(h5, "/connectivity/node", conn.node, entries);
   readArray(h5, "/connectivity/N", conn.N, entries);
   readArray(h5, "/connectivity/dN", conn.dN, entries);
+
+  const std::size_t links = length("/adjacency/pairs");
+  readArray(h5, "/adjacency/pairs", model.adjacency, links);
+  readArray(h5, "/adjacency/length0", model.adjacency_length0, links);
+  for (const auto& [i, j] : model.adjacency)
+    if (i < 0 || i >= j || j >= model.points.size())
+      h5.fail(fmt::format("use /adjacency/pairs: pair ({}, {}) is not two ordered points of {}", i, j,
+                          model.points.size()));
 
   const std::vector<std::uint8_t> meta = h5.read<std::uint8_t>("/run/meta");
   readCheckpointMeta(std::string(meta.begin(), meta.end()), file, materials, model, c.loop);

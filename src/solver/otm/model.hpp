@@ -18,6 +18,7 @@ struct Model {
   // Pairs of points (global indices, i < j) whose initial tets share a face; fragments are the
   // connected components of intact material over these links (analysis/fragments.hpp).
   std::vector<std::array<LocalIndex, 2>> adjacency;
+  std::vector<double> adjacency_length0;  // initial distance of each pair, same order
 };
 
 }  // namespace kessler::otm

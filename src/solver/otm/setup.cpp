@@ -51,6 +51,8 @@ int addBody(Model& model, const std::string& name, const MaterialPtr& material,
                    "body '{}': adjacency pair ({}, {}) is not ordered within its {} points", name, i, j,
                    mesh.points.size());
     model.adjacency.push_back({offset + i, offset + j});
+    const auto a = static_cast<std::size_t>(i), b = static_cast<std::size_t>(j);
+    model.adjacency_length0.push_back((mesh.points[b] - mesh.points[a]).norm());
   }
   model.bodies.push_back(BodyInfo{name, material_index, static_cast<LocalIndex>(point_begin), points.size(),
                                   static_cast<LocalIndex>(node_begin), nodes.size()});
