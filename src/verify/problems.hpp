@@ -9,6 +9,7 @@ namespace kessler::verify {
 Outcome lmeConsistency();
 Outcome waveSpeed();
 Outcome momentum();
+Outcome contactGap();
 Outcome energy();
 Outcome threadDeterminism();
 

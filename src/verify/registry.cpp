@@ -11,6 +11,7 @@ const std::vector<Problem>& problems() {
       {"lme-consistency", "LME identities on a distorted point cloud", lmeConsistency},
       {"wave-speed", "longitudinal wave speed in a bar under uniaxial strain", waveSpeed},
       {"momentum", "linear momentum conserved through a collision of two bodies", momentum},
+      {"contact-gap", "bodies separated by a gap do not interact until they touch", contactGap},
       {"energy", "energy drift of a freely vibrating elastic bar over 5 periods", energy},
       {"thread-determinism", "1 and 2 threads give bitwise identical fields", threadDeterminism},
       {"eos-mie-gruneisen", "Mie-Gruneisen EOS swept against its formula; c^2 against finite differences",
