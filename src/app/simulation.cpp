@@ -1,5 +1,6 @@
 #include "app/simulation.hpp"
 
+#include "app/impact_analysis.hpp"
 #include "app/progress.hpp"
 #include "app/run_folder.hpp"
 #include "app/signals.hpp"
@@ -60,6 +61,11 @@ class Run {
     io::writeSummary(dir_ / "summary.json", record_, *integrator_);
   }
   void printSummary() const;
+  // The impact measurements into the summary (before finish() writes it) and the pictures after.
+  void analyse(const std::string& state) { record_.analysis = analyseImpact(config_, model_, dir_, state); }
+  void plots() const {
+    if (config_.analysis.enabled && config_.analysis.plots) drawPlots(dir_);
+  }
 
   const io::RunConfig& config_;
   RunOptions options_;
@@ -136,8 +142,11 @@ RunOutcome Run::execute() {
         fmt::format("stopped at solver.max_steps = {} (t = {:.6g} s)", config_.solver.max_steps, integrator_->time());
     log::info("kessler: {}; continue with: {} --set solver.max_steps=0", record_.message, restart_hint);
   }
+  // A run stopped at max_steps is unfinished, like one stopped by a signal: no analysis.
+  if (stop_ == Stop::none) analyse("final");
   finish();
   printSummary();
+  if (stop_ == Stop::none) plots();
   return {dir_, 0};
 }
 
@@ -240,7 +249,9 @@ void Run::fail(const NumericalError& e) {
   if (integrator_) {
     remember();
     output();
+    analyse("at the failure");
     finish();
+    plots();
   } else {
     where = "no state was written";
   }

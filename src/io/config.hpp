@@ -42,6 +42,24 @@ struct CheckpointConfig {
   double wall_interval = 600.0;  // s of wall-clock time
 };
 
+// The end-of-run impact analysis (docs/analysis.md): which bodies are the projectile and the
+// plates, and the options of the measurements. Without a deck `analysis:` block every field is
+// inferred from the bodies (parseDeck fills them in, so the resolved deck shows what was used).
+struct AnalysisConfig {
+  bool enabled = true;           // false: no analysis (also when the deck has no moving body)
+  std::vector<int> projectiles;  // body indices
+  std::vector<int> plates;       // box bodies in the order the shot line meets them; last: rear wall
+  Vec3 shot_direction = -Vec3::UnitZ();  // unit, the projectile's direction of travel
+  double impact_speed = 0.0;             // m/s
+  int cloud_reference = 0;               // index into plates: the debris cloud is measured from its rear face
+  double link_stretch = 2.5;             // fragments: a link breaks beyond this factor of its initial length
+  bool plots = true;                     // run tools/plots/*.py at the end of the run
+  // The rear wall's properties for the ballistic-limit equations (defaults: Al 6061-T6).
+  double wall_yield_stress = 275.8e6;  // Pa
+  double wall_brinell_hardness = 95.0;
+  double wall_sound_speed = 5052.0;  // m/s
+};
+
 struct RunConfig {
   std::string title;
   std::string deck_path;                 // file the deck came from
@@ -51,6 +69,7 @@ struct RunConfig {
   otm::Settings solver;
   OutputConfig output;
   CheckpointConfig checkpoint;
+  AnalysisConfig analysis;
 };
 
 }  // namespace kessler::io

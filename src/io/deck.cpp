@@ -97,7 +97,8 @@ CheckpointConfig parseCheckpoint(const std::optional<Field>& field, double end_t
 }
 
 RunConfig parseTree(const Field& top, const fs::path& base_dir) {
-  MapField deck = top.map({"title", "materials", "bodies", "symmetry", "solver", "output", "checkpoint"});
+  MapField deck =
+      top.map({"title", "materials", "bodies", "symmetry", "solver", "output", "checkpoint", "analysis"});
   RunConfig config;
   config.deck_path = top.source().file();
   if (std::optional<Field> title = deck.find("title")) config.title = title->text("a title", true);
@@ -110,6 +111,7 @@ RunConfig parseTree(const Field& top, const fs::path& base_dir) {
   config.checkpoint = parseCheckpoint(deck.find("checkpoint"), config.solver.end_time);
   checkOverlaps(config.bodies, bodies);
   checkMemory(config, bodies);
+  config.analysis = parseAnalysis(deck.find("analysis"), config.bodies, bodies);
   return config;
 }
 
@@ -136,7 +138,9 @@ RunConfig parseText(const std::string& text, const std::string& name, const fs::
     Field(source, documents[1], "", documents[1].Mark())
         .failBare("a second YAML document ('---'): a deck is one document");
   if (!root.IsMap())
-    top.fail("the deck must be a map of sections (title, materials, bodies, symmetry, solver, output, checkpoint)");
+    top.fail(
+        "the deck must be a map of sections (title, materials, bodies, symmetry, solver, output, checkpoint, "
+        "analysis)");
   applyOverrides(root, overrides, source);
   try {
     return parseTree(top, base_dir);

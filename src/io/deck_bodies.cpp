@@ -4,7 +4,9 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
+#include <numbers>
 #include <optional>
 
 namespace kessler::io {
@@ -15,10 +17,28 @@ namespace fs = std::filesystem;
 
 constexpr const char* axis_names[] = {"x", "y", "z"};
 
-geometry::Sphere parseSphere(const Field& field) {
-  MapField map = field.map({"center", "radius"});
-  return {.center = map.require("center").vector(units::length),
-          .radius = map.require("radius").positive(units::length)};
+// The reference density of a material: a projectile may be given by its mass.
+double materialDensity(const MaterialConfig& material) {
+  return material.model == "impact" ? eos::referenceDensity(material.impact.eos) : material.neo_hookean.density;
+}
+
+// Exactly one of `size_key` and "mass" (the whole projectile's mass, even in a half model).
+std::optional<double> massInstead(const MapField& map, std::string_view size_key) {
+  std::optional<Field> mass = map.find("mass");
+  if (!mass) return std::nullopt;
+  if (std::optional<Field> size = map.find(size_key))
+    size->failBare(fmt::format("give either {} or mass, not both", size_key));
+  return mass->positive(units::mass);
+}
+
+geometry::Sphere parseSphere(const Field& field, double density) {
+  MapField map = field.map({"center", "radius", "mass"});
+  geometry::Sphere sphere{.center = map.require("center").vector(units::length)};
+  if (std::optional<double> mass = massInstead(map, "radius"))
+    sphere.radius = std::cbrt(3.0 * *mass / (4.0 * std::numbers::pi * density));
+  else
+    sphere.radius = map.require("radius").positive(units::length);
+  return sphere;
 }
 
 geometry::Box parseBox(const Field& field) {
@@ -33,13 +53,19 @@ geometry::Box parseBox(const Field& field) {
   return box;
 }
 
-geometry::Cylinder parseCylinder(const Field& field) {
-  MapField map = field.map({"base", "axis", "radius"});
+// With `mass`, `axis` gives the direction only and the height follows from the mass.
+geometry::Cylinder parseCylinder(const Field& field, double density) {
+  MapField map = field.map({"base", "axis", "radius", "mass"});
   Field axis = map.require("axis");
   geometry::Cylinder cylinder{.base = map.require("base").vector(units::length),
                               .axis = axis.vector(units::length),
                               .radius = map.require("radius").positive(units::length)};
   if (!(cylinder.axis.norm() > 0.0)) axis.fail("must not be zero: its length is the cylinder's height");
+  if (std::optional<Field> mass = map.find("mass")) {
+    const double height =
+        mass->positive(units::mass) / (density * std::numbers::pi * cylinder.radius * cylinder.radius);
+    cylinder.axis = cylinder.axis.normalized() * height;
+  }
   return cylinder;
 }
 
@@ -57,13 +83,13 @@ geometry::MeshFile parseMeshFile(const Field& field, const fs::path& base_dir) {
   return mesh;
 }
 
-geometry::Shape parseShape(const Field& field, const fs::path& base_dir) {
+geometry::Shape parseShape(const Field& field, const fs::path& base_dir, double density) {
   MapField map = field.map({"sphere", "box", "cylinder", "mesh"});
   if (map.entries().size() != 1) field.fail("must hold exactly one of sphere, box, cylinder, mesh");
   const MapField::Entry& entry = map.entries().front();
-  if (entry.key == "sphere") return parseSphere(entry.value);
+  if (entry.key == "sphere") return parseSphere(entry.value, density);
   if (entry.key == "box") return parseBox(entry.value);
-  if (entry.key == "cylinder") return parseCylinder(entry.value);
+  if (entry.key == "cylinder") return parseCylinder(entry.value, density);
   return parseMeshFile(entry.value, base_dir);
 }
 
@@ -93,6 +119,16 @@ double distanceToBox(const Vec3& x, const geometry::BoundingBox& box) {
   return (x.cwiseMax(box.min).cwiseMin(box.max) - x).norm();
 }
 
+// The thinnest dimension of an analytic shape: a box's smallest side, a cylinder's height or
+// diameter, a sphere's diameter.
+double smallestDimension(const geometry::Shape& shape) {
+  if (const auto* box = std::get_if<geometry::Box>(&shape)) return (box->max - box->min).minCoeff();
+  if (const auto* cylinder = std::get_if<geometry::Cylinder>(&shape))
+    return std::min(cylinder->axis.norm(), 2.0 * cylinder->radius);
+  if (const auto* sphere = std::get_if<geometry::Sphere>(&shape)) return 2.0 * sphere->radius;
+  return 0.0;
+}
+
 // Checks of one body that need several of its keys together.
 void checkBody(const BodyConfig& body, const MapField& map, const std::vector<int>& symmetry_axes) {
   const geometry::Shape& shape = body.mesh.shape;
@@ -113,6 +149,14 @@ void checkBody(const BodyConfig& body, const MapField& map, const std::vector<in
   if (body.mesh.mesh_size > largest)
     map.require("mesh_size")
         .fail(fmt::format("is larger than the body, whose largest dimension is {:.4g} m", largest));
+  // A plate thinner than one mesh cell has no material point inside its thickness: it cannot bend,
+  // and the hole and spall measurements have nothing to resolve.
+  const double thinnest = smallestDimension(shape);
+  if (body.mesh.mesh_size > thinnest * (1.0 + 1e-9))  // a plate meshed at exactly its thickness passes
+    map.require("mesh_size")
+        .fail(fmt::format("is larger than the body's thinnest dimension ({:.4g} m): the {} would be less than "
+                          "one mesh cell thick; use a mesh_size of at most {:.4g} m",
+                          thinnest, geometry::kindName(shape), thinnest));
   if (body.mesh.refine && distanceToBox(body.mesh.refine->center, box) > body.mesh.refine->radius)
     map.require("refine").fail("the refinement zone does not reach the body");
 }
@@ -138,7 +182,7 @@ BodyConfig parseBody(const Field& field, const std::vector<MaterialConfig>& mate
   }
   body.material = static_cast<int>(found - materials.begin());
 
-  body.mesh.shape = parseShape(map.require("shape"), base_dir);
+  body.mesh.shape = parseShape(map.require("shape"), base_dir, materialDensity(*found));
   body.mesh.symmetry_axes = symmetry_axes;
   body.mesh.mesh_size = map.require("mesh_size").positive(units::length);
   if (std::optional<Field> refine = map.find("refine"))

@@ -24,6 +24,8 @@ constexpr double tet_volume_factor = 0.1;
 constexpr double mesh_file_bytes_per_tet = 40.0;
 // Overlaps smaller than this fraction of the smaller body are sampling noise or touching faces.
 constexpr double overlap_tolerance = 1e-3;
+// A body whose overlap with another is this close to all of its volume lies inside it.
+constexpr double inside_tolerance = 0.02;
 
 double tetrahedra(double volume, double size) { return volume / (tet_volume_factor * size * size * size); }
 
@@ -91,6 +93,14 @@ void checkOverlaps(const std::vector<BodyConfig>& bodies, const Field& bodies_fi
       const double smaller = std::min(geometry::volume(a), geometry::volume(b));
       if (!(smaller > 0.0)) continue;  // a mesh file: its volume is unknown before it is read
       const double overlap = geometry::overlapVolume(a, b);
+      if (overlap > overlap_tolerance * smaller && overlap > (1.0 - inside_tolerance) * smaller) {
+        const bool j_smaller = geometry::volume(b) <= geometry::volume(a);
+        const std::size_t inner = j_smaller ? j : i, outer = j_smaller ? i : j;
+        items[j].failBare(fmt::format("body '{}' lies inside body '{}'{}: bodies must start apart (a projectile "
+                                      "in front of the plate it strikes)",
+                                      bodies[inner].name, bodies[outer].name,
+                                      outer == j ? "" : fmt::format(" (bodies[{}])", outer)));
+      }
       if (overlap > overlap_tolerance * smaller)
         items[j].failBare(
             fmt::format("body '{}' overlaps body '{}' (bodies[{}]) by about {:.3g} m^3, {:.2g}% of the "

@@ -37,7 +37,8 @@ static_assert(std::is_same_v<std::variant_alternative_t<0, strength::Yield>, str
                   std::is_same_v<std::variant_alternative_t<3, strength::Yield>, strength::JohnsonCook>,
               "material_keys::strength_models follows the order of strength::Yield");
 
-constexpr std::string_view neo_hookean_keys[] = {"model", "density", "youngs_modulus", "poisson_ratio"};
+constexpr std::string_view neo_hookean_keys[] = {"model", "density", "youngs_modulus", "poisson_ratio",
+                                                 "fracture_energy"};
 // Keys that only an impact material has: any of them makes a material without `model` an impact one.
 constexpr std::string_view impact_only_keys[] = {"library", "shear_modulus",  "eos",      "strength", "failure",
                                                  "thermal", "tension_cutoff", "viscosity"};
@@ -274,9 +275,19 @@ double parseTensionCutoff(const MapField& material, double base) {
   return floor;
 }
 
+// Eigenerosion's critical energy-release rate G_c ("100 kJ/m^2"); 0 switches eigenerosion off.
+double parseFractureEnergy(const MapField& material, double base) {
+  std::optional<Field> field = material.find("fracture_energy");
+  if (!field) return base;
+  const double gc = field->quantity(units::energy_per_area);
+  if (gc < 0.0) field->fail("must not be negative (0 switches eigenerosion off)");
+  return gc;
+}
+
 MaterialConfig parseImpact(const std::string& name, const Field& field, const fs::path& base_dir) {
   std::vector<std::string_view> allowed{"model", "density"};
   allowed.insert(allowed.end(), std::begin(impact_only_keys), std::end(impact_only_keys));
+  allowed.push_back("fracture_energy");
   MapField map = field.map(allowed);
   MaterialConfig material;
   material.name = name;
@@ -297,6 +308,7 @@ MaterialConfig parseImpact(const std::string& name, const Field& field, const fs
   const ViscosityParameters default_viscosity;
   p.viscosity = parseBlock(map, "viscosity", keys::viscosity, base ? &base->viscosity : &default_viscosity, false);
   p.pressure_floor = parseTensionCutoff(map, base ? base->pressure_floor : p.pressure_floor);
+  p.fracture_energy = parseFractureEnergy(map, base ? base->fracture_energy : 0.0);
   return material;
 }
 
@@ -311,6 +323,7 @@ MaterialConfig parseNeoHookean(const std::string& name, const Field& field) {
   Field poisson = map.require("poisson_ratio");
   p.poisson_ratio = poisson.quantity(units::dimensionless);
   if (!(p.poisson_ratio > -1.0 && p.poisson_ratio < 0.5)) poisson.fail("must lie in (-1, 0.5)");
+  p.fracture_energy = parseFractureEnergy(map, 0.0);
   // The model's own check stays the authority on what is physical, should it grow stricter.
   reportAt(field, [&] { p.check(); });
   return material;

@@ -4,6 +4,7 @@
 #include "io/yaml_reader.hpp"
 
 #include <filesystem>
+#include <optional>
 #include <vector>
 
 namespace kessler::io {
@@ -28,5 +29,12 @@ double keptVolume(const geometry::Shape& shape, const std::vector<int>& symmetry
 // run's memory estimate fits in this machine's physical memory. `bodies` is the deck's list.
 void checkOverlaps(const std::vector<BodyConfig>& bodies, const Field& bodies_field);
 void checkMemory(const RunConfig& config, const Field& bodies_field);
+
+// Parses the optional `analysis` section, inferring what it leaves out from the bodies (the
+// projectile: the bodies moving at least half as fast as the fastest; the plates: the box bodies
+// ahead of it that its shot line crosses, in order). Analysis is off when nothing moves or no
+// plate is found. `bodies_field` is the deck's list, for errors about inferred choices.
+AnalysisConfig parseAnalysis(const std::optional<Field>& field, const std::vector<BodyConfig>& bodies,
+                             const Field& bodies_field);
 
 }  // namespace kessler::io

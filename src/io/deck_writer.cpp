@@ -104,6 +104,7 @@ void impactMaterial(YAML::Emitter& out, const MaterialConfig& material) {
   // No tension cut-off is the default, and infinity has no deck spelling.
   if (std::isfinite(p.pressure_floor)) scalar(out, "tension_cutoff", p.pressure_floor, "Pa");
   block(out, "viscosity", nullptr, p.viscosity, keys::viscosity);
+  scalar(out, "fracture_energy", p.fracture_energy, "J/m^2; 0: no eigenerosion");
 }
 
 void body(YAML::Emitter& out, const BodyConfig& body, const RunConfig& config) {
@@ -126,6 +127,32 @@ void body(YAML::Emitter& out, const BodyConfig& body, const RunConfig& config) {
   out << YAML::EndMap;
 }
 
+void analysis(YAML::Emitter& out, const RunConfig& config) {
+  const AnalysisConfig& a = config.analysis;
+  out << YAML::Key << "analysis" << YAML::Value << YAML::BeginMap;
+  out << YAML::Key << "enabled" << YAML::Value << (a.enabled ? "true" : "false");
+  if (a.enabled) {
+    auto names = [&](const char* key, const std::vector<int>& bodies) {
+      out << YAML::Key << key << YAML::Value << YAML::Flow << YAML::BeginSeq;
+      for (int b : bodies) out << config.bodies.at(static_cast<std::size_t>(b)).name;
+      out << YAML::EndSeq;
+    };
+    names("projectile", a.projectiles);
+    names("plates", a.plates);
+    vector(out, "shot_direction", a.shot_direction, "unit vector");
+    out << YAML::Key << "cloud_reference" << YAML::Value
+        << config.bodies.at(static_cast<std::size_t>(a.plates.at(static_cast<std::size_t>(a.cloud_reference)))).name;
+  }
+  scalar(out, "link_stretch", a.link_stretch, "");
+  out << YAML::Key << "plots" << YAML::Value << (a.plots ? "true" : "false");
+  out << YAML::Key << "rear_wall" << YAML::Value << YAML::BeginMap;
+  scalar(out, "yield_stress", a.wall_yield_stress, "Pa");
+  scalar(out, "brinell_hardness", a.wall_brinell_hardness, "");
+  scalar(out, "sound_speed", a.wall_sound_speed, "m/s");
+  out << YAML::EndMap;
+  out << YAML::EndMap;
+}
+
 }  // namespace
 
 std::string resolvedDeckText(const RunConfig& config) {
@@ -144,6 +171,7 @@ std::string resolvedDeckText(const RunConfig& config) {
       scalar(out, "density", material.neo_hookean.density, "kg/m^3");
       scalar(out, "youngs_modulus", material.neo_hookean.youngs_modulus, "Pa");
       scalar(out, "poisson_ratio", material.neo_hookean.poisson_ratio, "");
+      scalar(out, "fracture_energy", material.neo_hookean.fracture_energy, "J/m^2; 0: no eigenerosion");
     }
     out << YAML::EndMap;
   }
@@ -180,6 +208,8 @@ std::string resolvedDeckText(const RunConfig& config) {
   scalar(out, "every", config.checkpoint.every, "s of simulated time; 0: never");
   scalar(out, "wall_interval", config.checkpoint.wall_interval, "s of wall time; 0: never");
   out << YAML::EndMap;
+
+  analysis(out, config);
 
   out << YAML::EndMap;
   return std::string(out.c_str()) + "\n";

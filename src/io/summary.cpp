@@ -64,6 +64,7 @@ void writeSummary(const std::filesystem::path& file, const RunRecord& record, co
                    {"final", energiesJson(record.history.back().energies)}};
   }
   if (!record.message.empty()) j["message"] = record.message;
+  if (!record.analysis.is_null()) j["analysis"] = record.analysis;
   writeTextAtomically(file, j.dump(2) + "\n");
 }
 

@@ -4,6 +4,8 @@
 #include "core/types.hpp"
 #include "solver/otm/integrator.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <filesystem>
 #include <map>
 #include <string>
@@ -28,6 +30,7 @@ struct RunRecord {
   long outputs = 0;
   std::map<std::string, double> extra_timings;  // phases outside the integrator (meshing, output)
   std::vector<HistoryRow> history;
+  nlohmann::json analysis;  // the impact measurements (docs/analysis.md); null: none
 };
 
 // Writes summary.json for the run of `integrator` (atomically).

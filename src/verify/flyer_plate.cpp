@@ -64,9 +64,11 @@ Profile measure(const otm::Model& model, int target_body) {
 
 FlyerPlateResult runFlyerPlate() {
   const library::Entry& al = library::find("Al6061-T6");
-  // The Hugoniot check needs no failure model: the library's JC damage set stays off, as in decks.
+  // The Hugoniot check needs no failure model: the library's JC damage set stays off, as in decks,
+  // and so does eigenerosion (the library's fracture energy).
   ImpactMaterialParameters parameters = al.parameters;
   parameters.damage.reset();
+  parameters.fracture_energy = 0.0;
   auto material = std::make_shared<ImpactMaterial>(al.name, parameters);
   const double v = 2000.0, w = 2 * cell;
   otm::Model model;

@@ -170,10 +170,23 @@ TEST(DeckMaterials, ChoosesTheModelFromTheKeys) {
   EXPECT_EQ(material("  al: { density: 2700, youngs_modulus: 70 GPa, poisson_ratio: 0.3 }").model, "neo-hookean");
   EXPECT_EQ(errorOf("  al: { density: 2700, shear_modulus: 26 GPa }"), "materials.al: missing required key 'eos'");
   EXPECT_EQ(errorOf("  al: { model: neo-hookean, library: Al6061-T6 }"),
-            "materials.al.library: unknown key (allowed: model, density, youngs_modulus, poisson_ratio)");
+            "materials.al.library: unknown key (allowed: model, density, youngs_modulus, poisson_ratio, "
+            "fracture_energy)");
   EXPECT_EQ(errorOf("  al: { library: Al6061-T6, youngs_modulus: 70 GPa }"),
             "materials.al.youngs_modulus: unknown key (allowed: model, density, library, shear_modulus, eos, "
-            "strength, failure, thermal, tension_cutoff, viscosity)");
+            "strength, failure, thermal, tension_cutoff, viscosity, fracture_energy)");
+}
+
+TEST(DeckMaterials, FractureEnergyHasUnitsAndDefaultsToTheLibrary) {
+  EXPECT_EQ(material("  al: { library: Al6061-T6, fracture_energy: 20 kJ/m^2 }").impact.fracture_energy, 20e3);
+  EXPECT_EQ(material("  al: { library: Al6061-T6 }").impact.fracture_energy,
+            library::find("Al6061-T6").parameters.fracture_energy);
+  EXPECT_EQ(material("  al: { density: 2700, youngs_modulus: 70 GPa, poisson_ratio: 0.3, fracture_energy: 1 kJ/m^2 }")
+                .neo_hookean.fracture_energy,
+            1e3);
+  EXPECT_EQ(errorOf("  al: { library: Al6061-T6, fracture_energy: -1 }"),
+            "materials.al.fracture_energy: must not be negative (0 switches eigenerosion off) (got '-1')");
+  EXPECT_TRUE(errorOf("  al: { library: Al6061-T6, fracture_energy: 100 kJ }").starts_with("materials.al.fracture_energy: "));
 }
 
 TEST(DeckMaterials, TensionCutoffNoneRemovesTheFloor) {
