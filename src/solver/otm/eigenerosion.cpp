@@ -30,9 +30,6 @@ LocalIndex Eigenerosion::apply(Model& model) {
   for (LocalIndex p = 0; p < np; ++p) {
     const int body = points.body[p];
     if (points.eroded[p] || gc[body] <= 0.0) continue;
-    // A crack does not open under compression: a point whose mean stress is compressive keeps
-    // its material (a shock's plastic work would otherwise erode everything it crosses).
-    if (points.stress[p].trace() < 0.0) continue;
     const double eps = settings_.erosion_radius * points.spacing(p);
     double mass = 0.0, energy = 0.0;
     cells_.forEachWithin(points.x[p], eps, [&](LocalIndex q, double) {
