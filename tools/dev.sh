@@ -11,7 +11,7 @@ cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake ninja-build pkg-config libeigen3-dev libyaml-cpp-dev libfmt-dev libcli11-dev
           libhdf5-dev libgmsh-dev nlohmann-json3-dev googletest libgtest-dev python3 python3-numpy
-          python3-h5py python3-matplotlib)
+          python3-h5py python3-matplotlib libbenchmark-dev)
 # Only for `fuzz`: clang with its sanitizer and libFuzzer runtimes, and its OpenMP.
 fuzz_packages=(clang libclang-rt-14-dev libomp-dev)
 
@@ -44,7 +44,7 @@ asan() {
   sanitizer_environment
   cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DKESSLER_SANITIZE=ON >/dev/null
   cmake --build build-asan -j"$(nproc)"
-  ctest --test-dir build-asan -L unit --output-on-failure
+  ctest --test-dir build-asan -L unit -j"$(nproc)" --output-on-failure
   build-asan/src/app/kessler run examples/elastic-sphere-plate.yaml --out build-asan/example-1us \
     --set solver.end_time="1 us" --set output.every="0.5 us" --quiet
   echo "asan: unit tests and a 1 us impact ran clean"
@@ -88,7 +88,7 @@ case "${1:-}" in
   test)
     install_missing "${packages[@]}"
     build
-    ctest --test-dir build --output-on-failure
+    ctest --test-dir build -j"$(nproc)" -LE long --output-on-failure
     ;;
   build)
     install_missing "${packages[@]}"

@@ -15,6 +15,7 @@ void addCommands(CLI::App& app) {
   addRunCommands(app);
   addVerifyCommand(app);
   addEosTableCommand(app);
+  addBenchCommand(app);
 }
 
 }  // namespace kessler::app

@@ -8,6 +8,7 @@ namespace kessler::app {
 void addCommands(CLI::App& app);
 void addVerifyCommand(CLI::App& app);
 void addRunCommands(CLI::App& app);  // run and check
+void addBenchCommand(CLI::App& app);
 
 void setExitCode(int code);
 int exitCode();

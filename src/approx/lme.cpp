@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace kessler::lme {
 
@@ -19,14 +20,15 @@ constexpr double stall_tolerance = 1e-10;
 // One pass over the nodes at a given lambda: the normalised weights p_a, log Z, and its
 // gradient r = sum p_a d_a and Hessian J = sum p_a d_a d_a^T - r r^T. The exponent is shifted
 // by an upper bound (beta |d|^2 >= 0, so f_a <= |lambda| max|d|) to avoid a separate max pass.
-double evaluate(std::span<const Vec3> d, double beta, const Vec3& lambda, double shift, std::span<double> p, Vec3& r,
-                Mat3& J) {
+// `base` holds -beta |d_a|^2, which does not change during the iteration.
+double evaluate(std::span<const Vec3> d, std::span<const double> base, const Vec3& lambda, double shift,
+                std::span<double> p, Vec3& r, Mat3& J) {
   double z = 0.0;
   Vec3 s1 = Vec3::Zero();
   double xx = 0, xy = 0, xz = 0, yy = 0, yz = 0, zz = 0;
   for (std::size_t a = 0; a < d.size(); ++a) {
     const Vec3& da = d[a];
-    const double w = std::exp(-beta * da.squaredNorm() + lambda.dot(da) - shift);
+    const double w = std::exp(base[a] + lambda.dot(da) - shift);
     p[a] = w;
     z += w;
     s1 += w * da;
@@ -40,8 +42,8 @@ double evaluate(std::span<const Vec3> d, double beta, const Vec3& lambda, double
   if (!(z > 1e-250)) {
     // The bound was far above every exponent (a huge lambda): shift by the true maximum.
     double fmax = -std::numeric_limits<double>::infinity();
-    for (const Vec3& da : d) fmax = std::max(fmax, -beta * da.squaredNorm() + lambda.dot(da));
-    return evaluate(d, beta, lambda, fmax, p, r, J);
+    for (std::size_t a = 0; a < d.size(); ++a) fmax = std::max(fmax, base[a] + lambda.dot(d[a]));
+    return evaluate(d, base, lambda, fmax, p, r, J);
   }
   const double inv = 1.0 / z;
   for (double& pa : p) pa *= inv;
@@ -68,11 +70,20 @@ Result shapeFunctions(std::span<const Vec3> d, double beta, double h, Vec3& lamb
                       std::span<Vec3> dN) {
   Result result;
   if (!lambda.allFinite()) lambda.setZero();
-  double max_d = 0.0;
-  for (const Vec3& da : d) max_d = std::max(max_d, da.norm());
+  // -beta |d_a|^2 once per call (per thread, so the time loop does not allocate after the first steps).
+  thread_local std::vector<double> base_storage;
+  base_storage.resize(d.size());
+  const std::span<const double> base(base_storage.data(), d.size());
+  double max_d2 = 0.0;
+  for (std::size_t a = 0; a < d.size(); ++a) {
+    const double d2 = d[a].squaredNorm();
+    max_d2 = std::max(max_d2, d2);
+    base_storage[a] = -beta * d2;
+  }
+  const double max_d = std::sqrt(max_d2);
   Vec3 r;
   Mat3 J;
-  double log_z = evaluate(d, beta, lambda, lambda.norm() * max_d, N, r, J);
+  double log_z = evaluate(d, base, lambda, lambda.norm() * max_d, N, r, J);
   const double h2 = h * h;
   double previous = std::numeric_limits<double>::infinity();
   for (;;) {
@@ -101,12 +112,12 @@ Result shapeFunctions(std::span<const Vec3> d, double beta, double h, Vec3& lamb
     Vec3 trial = lambda + step;
     Vec3 trial_r;
     Mat3 trial_J;
-    double trial_log_z = evaluate(d, beta, trial, trial.norm() * max_d, N, trial_r, trial_J);
+    double trial_log_z = evaluate(d, base, trial, trial.norm() * max_d, N, trial_r, trial_J);
     if (result.residual > 1e-6) {
       while (trial_log_z > log_z + 1e-4 * t * r.dot(step) && t > 1e-10) {
         t *= 0.5;
         trial = lambda + t * step;
-        trial_log_z = evaluate(d, beta, trial, trial.norm() * max_d, N, trial_r, trial_J);
+        trial_log_z = evaluate(d, base, trial, trial.norm() * max_d, N, trial_r, trial_J);
       }
     }
     lambda = trial;

@@ -21,6 +21,9 @@ class GmshSession {
 
  private:
   std::unique_lock<std::mutex> lock_;
+  // Gmsh's General.NumThreads calls omp_set_num_threads: the caller's thread count is put back
+  // when the session ends, or every run after meshing would be single-threaded.
+  int omp_threads_ = 1;
 };
 
 // Describes the exception in flight (call from a catch block inside a session): Gmsh 4.8

@@ -2,6 +2,7 @@
 #include "geometry/gmsh_backend.hpp"
 
 #include <gmsh.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <exception>
@@ -18,7 +19,7 @@ std::mutex& gmshMutex() {
 
 }  // namespace
 
-GmshSession::GmshSession() : lock_(gmshMutex()) {
+GmshSession::GmshSession() : lock_(gmshMutex()), omp_threads_(omp_get_max_threads()) {
   // No config files: a user's gmshrc must not change Kessler's meshes.
   gmsh::initialize(0, nullptr, false);
   gmsh::option::setNumber("General.Terminal", 0);
@@ -32,6 +33,7 @@ GmshSession::~GmshSession() {
   } catch (...) {
     // A destructor must not throw; Gmsh has nothing left for us to release.
   }
+  omp_set_num_threads(omp_threads_);
 }
 
 std::string currentGmshError() {

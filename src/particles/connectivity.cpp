@@ -1,22 +1,64 @@
 #include "particles/connectivity.hpp"
 
+#include <omp.h>
+
+#include <algorithm>
+
 namespace kessler {
 
+// Counting sort of the entries by node, in parallel and deterministic: thread t takes a
+// contiguous block of points (so of entries), counts its entries per node, and writes them after
+// those of threads 0..t-1 for the same node. Scanning each block in entry order keeps every
+// node's list sorted by point, whatever the thread count.
 void Connectivity::buildTranspose(LocalIndex node_count) {
+  std::vector<Index> scratch;
+  buildTranspose(node_count, scratch);
+}
+
+void Connectivity::buildTranspose(LocalIndex node_count, std::vector<Index>& scratch) {
   const LocalIndex np = points();
   const Index entries = offset.empty() ? 0 : offset.back();
   entry_point.resize(static_cast<std::size_t>(entries));
-#pragma omp parallel for schedule(static)
-  for (LocalIndex p = 0; p < np; ++p)
-    for (Index k = offset[p]; k < offset[p + 1]; ++k) entry_point[k] = p;
-
-  // Counting sort by node; scanning entries in order keeps each node's list sorted by point.
-  node_offset.assign(static_cast<std::size_t>(node_count) + 1, 0);
-  for (Index k = 0; k < entries; ++k) ++node_offset[node[k] + 1];
-  for (LocalIndex a = 0; a < node_count; ++a) node_offset[a + 1] += node_offset[a];
   node_entry.resize(static_cast<std::size_t>(entries));
-  std::vector<Index> cursor(node_offset.begin(), node_offset.end() - 1);
-  for (Index k = 0; k < entries; ++k) node_entry[cursor[node[k]]++] = k;
+  node_offset.assign(static_cast<std::size_t>(node_count) + 1, 0);
+  const int threads = omp_get_max_threads();
+  scratch.resize(static_cast<std::size_t>(threads) * static_cast<std::size_t>(node_count));
+#pragma omp parallel num_threads(threads)
+  {
+    const int t = omp_get_thread_num();
+    const int nt = omp_get_num_threads();
+    const LocalIndex begin = static_cast<LocalIndex>(static_cast<Index>(np) * t / nt);
+    const LocalIndex end = static_cast<LocalIndex>(static_cast<Index>(np) * (t + 1) / nt);
+    Index* count = scratch.data() + static_cast<std::size_t>(t) * static_cast<std::size_t>(node_count);
+    std::fill(count, count + node_count, Index{0});
+    for (LocalIndex p = begin; p < end; ++p)
+      for (Index k = offset[p]; k < offset[p + 1]; ++k) {
+        entry_point[k] = p;
+        ++count[node[k]];
+      }
+#pragma omp barrier
+    // Node a's entries: those of thread 0, then thread 1, ...; the offsets by nodes in parallel.
+#pragma omp for schedule(static)
+    for (LocalIndex a = 0; a < node_count; ++a) {
+      Index total = 0;
+      for (int u = 0; u < nt; ++u) total += scratch[static_cast<std::size_t>(u) * node_count + a];
+      node_offset[a + 1] = total;
+    }
+#pragma omp single
+    for (LocalIndex a = 0; a < node_count; ++a) node_offset[a + 1] += node_offset[a];
+#pragma omp for schedule(static)
+    for (LocalIndex a = 0; a < node_count; ++a) {
+      Index at = node_offset[a];
+      for (int u = 0; u < nt; ++u) {
+        Index& c = scratch[static_cast<std::size_t>(u) * node_count + a];
+        const Index n = c;
+        c = at;
+        at += n;
+      }
+    }
+    for (LocalIndex p = begin; p < end; ++p)
+      for (Index k = offset[p]; k < offset[p + 1]; ++k) node_entry[count[node[k]]++] = k;
+  }
 }
 
 }  // namespace kessler

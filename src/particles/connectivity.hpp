@@ -20,8 +20,11 @@ struct Connectivity {
   std::vector<LocalIndex> entry_point;  // point of each entry
 
   LocalIndex points() const { return offset.empty() ? 0 : static_cast<LocalIndex>(offset.size() - 1); }
-  // Builds node_offset, node_entry and entry_point from offset and node.
+  // Builds node_offset, node_entry and entry_point from offset and node, in parallel; the result
+  // does not depend on the thread count. `scratch` (threads x nodes counters) may be kept by the
+  // caller so that the time loop does not allocate.
   void buildTranspose(LocalIndex node_count);
+  void buildTranspose(LocalIndex node_count, std::vector<Index>& scratch);
 };
 
 }  // namespace kessler

@@ -1,8 +1,43 @@
 #include "particles/store.hpp"
 
+#include "core/error.hpp"
+
 #include <cmath>
+#include <type_traits>
 
 namespace kessler {
+
+namespace {
+
+template <typename T>
+void permuteArray(std::vector<T>& values, const std::vector<LocalIndex>& order, std::vector<T>& scratch) {
+  KESSLER_VERIFY(values.size() == order.size(), "permutation of {} entries for an array of {}", order.size(),
+                 values.size());
+  scratch.resize(order.size());
+  for (std::size_t i = 0; i < order.size(); ++i) scratch[i] = values[order[i]];
+  values.swap(scratch);
+}
+
+template <typename... Arrays>
+void permuteAll(const std::vector<LocalIndex>& order, std::size_t size, Arrays&... arrays) {
+  KESSLER_VERIFY(order.size() == size, "permutation of {} entries for {} particles", order.size(), size);
+  auto one = [&](auto& values) {
+    std::remove_reference_t<decltype(values)> scratch;
+    permuteArray(values, order, scratch);
+  };
+  (one(arrays), ...);
+}
+
+}  // namespace
+
+void NodeStore::permute(const std::vector<LocalIndex>& order) {
+  permuteAll(order, x.size(), id, body, x, v, mass, momentum, force, constrained, prescribed_v);
+}
+
+void PointStore::permute(const std::vector<LocalIndex>& order) {
+  permuteAll(order, x.size(), id, body, x, v, mass, volume, volume0, spacing0, F, dF, stress, energy, sound_speed,
+             plastic_strain, temperature, damage, strain_energy, plastic_work, viscous_pressure, be, eroded, lambda);
+}
 
 void NodeStore::resize(std::size_t n) {
   id.resize(n);

@@ -3,6 +3,7 @@
 // Points are stored grouped by body so that each body is one contiguous range and a
 // material law runs over a whole range at once. Loops run over the owned ranges
 // [0, owned) so that MPI ghosts can be appended behind them later.
+// A new array must be added to resize() and permute() as well.
 #include "core/types.hpp"
 
 #include <cstdint>
@@ -25,6 +26,8 @@ struct NodeStore {
 
   LocalIndex size() const { return static_cast<LocalIndex>(x.size()); }
   void resize(std::size_t n);
+  // Reorders every array: new index i holds what old index order[i] held (order: a permutation).
+  void permute(const std::vector<LocalIndex>& order);
 };
 
 struct PointStore {
@@ -54,6 +57,8 @@ struct PointStore {
 
   LocalIndex size() const { return static_cast<LocalIndex>(x.size()); }
   void resize(std::size_t n);
+  // Reorders every array: new index i holds what old index order[i] held (order: a permutation).
+  void permute(const std::vector<LocalIndex>& order);
   double density(LocalIndex p) const { return mass[p] / volume[p]; }
   // Current support size: the reference spacing scaled with the volume change.
   double spacing(LocalIndex p) const;

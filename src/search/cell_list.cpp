@@ -9,7 +9,6 @@ namespace kessler {
 
 void CellList::build(const std::vector<Vec3>& x, LocalIndex count, double cell_size) {
   KESSLER_VERIFY(cell_size > 0.0 && std::isfinite(cell_size), "cell list: invalid cell size {}", cell_size);
-  x_ = &x;
   Vec3 lo = Vec3::Constant(0.0), hi = Vec3::Constant(0.0);
   if (count > 0) {
     lo = x[0];
@@ -36,7 +35,8 @@ void CellList::build(const std::vector<Vec3>& x, LocalIndex count, double cell_s
   const long cells = static_cast<long>(dims_[0]) * dims_[1] * dims_[2];
 
   // Counting sort of positions into cells: stable, so each cell lists indices in order.
-  std::vector<long> cell_of(static_cast<std::size_t>(count));
+  std::vector<long>& cell_of = cell_of_;
+  cell_of.resize(static_cast<std::size_t>(count));
   start_.assign(static_cast<std::size_t>(cells) + 1, 0);
   for (LocalIndex a = 0; a < count; ++a) {
     std::array<int, 3> c = cellOf(x[a]);
@@ -46,8 +46,11 @@ void CellList::build(const std::vector<Vec3>& x, LocalIndex count, double cell_s
   }
   for (long c = 0; c < cells; ++c) start_[c + 1] += start_[c];
   sorted_.resize(static_cast<std::size_t>(count));
-  std::vector<LocalIndex> cursor(start_.begin(), start_.end() - 1);
-  for (LocalIndex a = 0; a < count; ++a) sorted_[cursor[cell_of[a]]++] = a;
+  cursor_.assign(start_.begin(), start_.end() - 1);
+  for (LocalIndex a = 0; a < count; ++a) sorted_[cursor_[cell_of[a]]++] = a;
+  // Positions in cell order: a query streams through them instead of jumping through x.
+  sorted_x_.resize(static_cast<std::size_t>(count));
+  for (LocalIndex s = 0; s < count; ++s) sorted_x_[s] = x[sorted_[s]];
 }
 
 }  // namespace kessler

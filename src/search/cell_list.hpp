@@ -26,12 +26,14 @@ class CellList {
   std::array<int, 3> cellOf(const Vec3& x) const;
   long flat(int i, int j, int k) const { return (static_cast<long>(k) * dims_[1] + j) * dims_[0] + i; }
 
-  const std::vector<Vec3>* x_ = nullptr;
   Vec3 origin_ = Vec3::Zero();
   double cell_ = 1.0;
   std::array<int, 3> dims_{1, 1, 1};
   std::vector<LocalIndex> start_;   // size cells+1
   std::vector<LocalIndex> sorted_;  // position indices grouped by cell
+  std::vector<Vec3> sorted_x_;      // their positions, in the same order
+  std::vector<long> cell_of_;       // build scratch, kept so that rebuilding does not allocate
+  std::vector<LocalIndex> cursor_;  // build scratch
 };
 
 inline std::array<int, 3> CellList::cellOf(const Vec3& x) const {
@@ -50,15 +52,13 @@ void CellList::forEachWithin(const Vec3& q, double radius, F&& f) const {
     hi[d] = std::min(hi[d], dims_[d] - 1);
     if (lo[d] > hi[d]) return;
   }
-  const std::vector<Vec3>& x = *x_;
   for (int k = lo[2]; k <= hi[2]; ++k)
     for (int j = lo[1]; j <= hi[1]; ++j)
       for (int i = lo[0]; i <= hi[0]; ++i) {
         const long c = flat(i, j, k);
         for (LocalIndex s = start_[c]; s < start_[c + 1]; ++s) {
-          const LocalIndex a = sorted_[s];
-          const double d2 = (x[a] - q).squaredNorm();
-          if (d2 <= r2) f(a, d2);
+          const double d2 = (sorted_x_[s] - q).squaredNorm();
+          if (d2 <= r2) f(sorted_[s], d2);
         }
       }
 }

@@ -2,6 +2,8 @@
 
 #include "core/error.hpp"
 #include "core/reduce.hpp"
+#include "solver/otm/integrator_assembly.hpp"
+#include "solver/otm/integrator_ordering.hpp"
 
 #include <Eigen/Eigenvalues>
 
@@ -18,6 +20,9 @@ Integrator::Integrator(Model& model, const Settings& settings)
 }
 
 void Integrator::initialise() {
+  // Points and nodes in Morton order, once, before anything refers to their indices (the first
+  // output and checkpoint already see this order, so a restart continues with it).
+  sortForLocality(model_);
   for (const BodyInfo& body : model_.bodies)
     model_.materials[body.material]->initialise(model_.points, body.point_begin, std::min(body.point_end, model_.points.owned));
   {
@@ -74,29 +79,9 @@ void Integrator::step() {
   }
 }
 
-// Lumped mass m_a = sum_p N_a m_p, momentum l_a = sum_p N_a m_p v_p and internal force
-// f_a = -sum_p V_p sigma_p grad N_a, each a gather over the node's points in point order.
-void Integrator::assembleNodes() {
-  NodeStore& nodes = model_.nodes;
-  const PointStore& points = model_.points;
-  const Connectivity& conn = model_.connectivity;
-#pragma omp parallel for schedule(static)
-  for (LocalIndex a = 0; a < nodes.owned; ++a) {
-    double m = 0.0;
-    Vec3 l = Vec3::Zero(), f = Vec3::Zero();
-    for (Index k = conn.node_offset[a]; k < conn.node_offset[a + 1]; ++k) {
-      const Index e = conn.node_entry[k];
-      const LocalIndex p = conn.entry_point[e];
-      const double nm = conn.N[e] * points.mass[p];
-      m += nm;
-      l += nm * points.v[p];
-      if (!points.eroded[p]) f.noalias() -= points.volume[p] * (points.stress[p] * conn.dN[e]);
-    }
-    nodes.mass[a] = m;
-    nodes.momentum[a] = l;
-    nodes.force[a] = f;
-  }
-}
+// Lumped mass, momentum and internal force gathered over each node's points
+// (solver/otm/integrator_assembly.hpp).
+void Integrator::assembleNodes() { otm::assembleNodes(model_.connectivity, model_.points, model_.nodes, loads_); }
 
 void Integrator::updateNodes(double dt, double dt_average) {
   NodeStore& nodes = model_.nodes;

@@ -5,6 +5,7 @@
 // constitutive update, new neighbourhoods and shape functions, CFL time step.
 #include "core/timer.hpp"
 #include "solver/otm/eigenerosion.hpp"
+#include "solver/otm/integrator_assembly.hpp"
 #include "solver/otm/model.hpp"
 #include "solver/otm/neighbourhoods.hpp"
 #include "solver/otm/settings.hpp"
@@ -67,6 +68,7 @@ class Integrator {
   Eigenerosion erosion_;
   std::vector<Vec3> dv_;  // nodal velocity increment of the step (FLIP-style transfer to points)
   std::vector<Vec3> du_;  // nodal displacement of the step
+  std::vector<PointLoad> loads_;  // assembly scratch, one record per point
   double dt_step_ = 0.0;  // length of the step in progress
   PhaseTimers timers_;
   double time_ = 0.0;

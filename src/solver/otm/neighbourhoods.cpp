@@ -43,10 +43,18 @@ void Neighbourhoods::update(Model& model) {
   const LocalIndex np = points.owned;
 
   Stopwatch watch;
-  double max_radius = 0.0;
-  for (LocalIndex p = 0; p < np; ++p)
-    max_radius = std::max(max_radius, lme::cutoffRadius(settings_.lme_gamma, points.spacing(p), settings_.lme_tolerance));
-  cells_.build(nodes.x, nodes.size(), std::max(max_radius, 1e-300));
+  // Cells of the mean cut-off radius of the intact points: a query with a larger radius visits more
+  // cells, so this is only about cost. The largest radius would let a few strongly expanded points
+  // (release waves, spall) make the cells, and so every query, far too large.
+  double radius_sum = 0.0;
+  LocalIndex intact = 0;
+  for (LocalIndex p = 0; p < np; ++p) {
+    if (points.eroded[p]) continue;
+    radius_sum += lme::cutoffRadius(settings_.lme_gamma, points.spacing(p), settings_.lme_tolerance);
+    ++intact;
+  }
+  const double cell_size = intact > 0 ? radius_sum / intact : 1.0;
+  cells_.build(nodes.x, nodes.size(), std::max(cell_size, 1e-300));
 
   const int threads = omp_get_max_threads();
   scratch_.resize(static_cast<std::size_t>(threads));
@@ -140,7 +148,7 @@ void Neighbourhoods::update(Model& model) {
         points.id[failed], model.bodies[points.body[failed]].name, x[0], x[1], x[2], lme::describe(failure.status),
         count_[failed], failure.residual, failure.iterations));
   }
-  conn.buildTranspose(nodes.size());
+  conn.buildTranspose(nodes.size(), transpose_scratch_);
   const double total = watch.seconds();
   shape_seconds_ = shape_time;
   search_seconds_ = total - shape_time;

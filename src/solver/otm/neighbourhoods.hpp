@@ -42,6 +42,7 @@ class Neighbourhoods {
   CellList cells_;
   std::vector<Scratch> scratch_;  // one per thread
   std::vector<int> count_;
+  std::vector<Index> transpose_scratch_;
   double search_seconds_ = 0.0, shape_seconds_ = 0.0;
 };
 

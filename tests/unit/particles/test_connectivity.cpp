@@ -1,6 +1,7 @@
 #include "particles/connectivity.hpp"
 
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <random>
 
@@ -35,6 +36,31 @@ TEST(Connectivity, TransposeListsEveryEntryInPointOrder) {
     }
   }
   for (int s : seen) EXPECT_EQ(s, 1);
+}
+
+// The transpose is built in parallel: any thread count gives the same arrays.
+TEST(Connectivity, TransposeDoesNotDependOnTheThreadCount) {
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<int> count(0, 12), node(0, 99);
+  Connectivity c;
+  c.offset.push_back(0);
+  for (int p = 0; p < 1000; ++p) {
+    const int n = count(rng);
+    for (int k = 0; k < n; ++k) c.node.push_back(node(rng));
+    c.offset.push_back(static_cast<Index>(c.node.size()));
+  }
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  c.buildTranspose(100);
+  const Connectivity one = c;
+  for (int t : {2, 3, 5}) {
+    omp_set_num_threads(t);
+    c.buildTranspose(100);
+    EXPECT_EQ(c.node_offset, one.node_offset) << t << " threads";
+    EXPECT_EQ(c.node_entry, one.node_entry) << t << " threads";
+    EXPECT_EQ(c.entry_point, one.entry_point) << t << " threads";
+  }
+  omp_set_num_threads(threads);
 }
 
 }  // namespace

@@ -1,0 +1,40 @@
+#include "solver/otm/integrator_assembly.hpp"
+
+namespace kessler::otm {
+
+void assembleNodes(const Connectivity& conn, const PointStore& points, NodeStore& nodes,
+                   std::vector<PointLoad>& loads) {
+  const LocalIndex np = points.owned;
+  loads.resize(static_cast<std::size_t>(np));
+#pragma omp parallel
+  {
+#pragma omp for schedule(static)
+    for (LocalIndex p = 0; p < np; ++p) {
+      PointLoad& load = loads[p];
+      load.mass = points.mass[p];
+      load.momentum = points.mass[p] * points.v[p];
+      if (points.eroded[p])
+        load.minus_volume_stress.setZero();
+      else
+        load.minus_volume_stress = -points.volume[p] * points.stress[p];
+    }
+#pragma omp for schedule(static)
+    for (LocalIndex a = 0; a < nodes.owned; ++a) {
+      double m = 0.0;
+      Vec3 l = Vec3::Zero(), f = Vec3::Zero();
+      for (Index k = conn.node_offset[a]; k < conn.node_offset[a + 1]; ++k) {
+        const Index e = conn.node_entry[k];
+        const PointLoad& load = loads[conn.entry_point[e]];
+        const double N = conn.N[e];
+        m += N * load.mass;
+        l += N * load.momentum;
+        f.noalias() += load.minus_volume_stress * conn.dN[e];
+      }
+      nodes.mass[a] = m;
+      nodes.momentum[a] = l;
+      nodes.force[a] = f;
+    }
+  }
+}
+
+}  // namespace kessler::otm

@@ -1,0 +1,85 @@
+// Morton ordering of points and nodes (solver/otm/integrator_ordering.hpp): a permutation within
+// each body's ranges, keys in increasing order, the mesh adjacency renumbered with the points, and
+// the transpose built in parallel identical for any thread count.
+#include "geometry/structured_mesh.hpp"
+#include "material/neo_hookean.hpp"
+#include "solver/otm/integrator_ordering.hpp"
+#include "solver/otm/setup.hpp"
+
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <map>
+#include <utility>
+
+namespace kessler::otm {
+namespace {
+
+Model twoBodies() {
+  NeoHookeanParameters p;
+  p.density = 2700.0;
+  p.youngs_modulus = 70e9;
+  p.poisson_ratio = 0.33;
+  auto material = std::make_shared<NeoHookean>("al", p);
+  Model model;
+  addBody(model, "a", material,
+          geometry::discretise(
+              geometry::structuredBoxMesh(geometry::Box{Vec3(0, 0, 0), Vec3(4e-3, 3e-3, 2e-3)}, {4, 3, 2})),
+          Vec3::Zero());
+  addBody(model, "b", material,
+          geometry::discretise(
+              geometry::structuredBoxMesh(geometry::Box{Vec3(0, 0, 3e-3), Vec3(2e-3, 2e-3, 5e-3)}, {2, 2, 2})),
+          Vec3(0, 0, -10.0));
+  return model;
+}
+
+TEST(Ordering, PermutesWithinBodiesAlongTheMortonCurve) {
+  Model model = twoBodies();
+  const Model before = model;
+  sortForLocality(model);
+  ASSERT_EQ(model.points.size(), before.points.size());
+  ASSERT_EQ(model.nodes.size(), before.nodes.size());
+  Vec3 lo = model.nodes.x[0], hi = model.nodes.x[0];
+  for (const Vec3& x : model.nodes.x) {
+    lo = lo.cwiseMin(x);
+    hi = hi.cwiseMax(x);
+  }
+  std::map<Index, LocalIndex> old_point;
+  for (LocalIndex p = 0; p < before.points.size(); ++p) old_point[before.points.id[p]] = p;
+  for (const BodyInfo& body : model.bodies) {
+    for (LocalIndex p = body.point_begin; p < body.point_end; ++p) {
+      const LocalIndex q = old_point.at(model.points.id[p]);
+      EXPECT_GE(q, body.point_begin);
+      EXPECT_LT(q, body.point_end);
+      EXPECT_EQ(model.points.x[p], before.points.x[q]);
+      EXPECT_EQ(model.points.mass[p], before.points.mass[q]);
+      if (p > body.point_begin) {
+        EXPECT_LE(mortonKey(model.points.x[p - 1], lo, hi), mortonKey(model.points.x[p], lo, hi));
+      }
+    }
+    for (LocalIndex a = body.node_begin + 1; a < body.node_end; ++a)
+      EXPECT_LE(mortonKey(model.nodes.x[a - 1], lo, hi), mortonKey(model.nodes.x[a], lo, hi));
+  }
+  // The adjacency links the same points (by id) as before, each pair ordered.
+  ASSERT_EQ(model.adjacency.size(), before.adjacency.size());
+  for (std::size_t k = 0; k < model.adjacency.size(); ++k) {
+    const auto [i, j] = model.adjacency[k];
+    EXPECT_LT(i, j);
+    const auto [oi, oj] = before.adjacency[k];
+    const std::pair<Index, Index> now = std::minmax(model.points.id[i], model.points.id[j]);
+    const std::pair<Index, Index> then = std::minmax(before.points.id[oi], before.points.id[oj]);
+    EXPECT_EQ(now, then);
+  }
+}
+
+TEST(Ordering, MortonKeyInterleavesTheAxes) {
+  const Vec3 lo = Vec3::Zero(), hi = Vec3::Ones();
+  EXPECT_EQ(mortonKey(Vec3(0, 0, 0), lo, hi), 0u);
+  EXPECT_EQ(mortonKey(Vec3(1, 0, 0), lo, hi), 0x1249249249249249ULL);
+  EXPECT_EQ(mortonKey(Vec3(0, 1, 0), lo, hi), 0x1249249249249249ULL << 1);
+  EXPECT_EQ(mortonKey(Vec3(0, 0, 1), lo, hi), 0x1249249249249249ULL << 2);
+}
+
+}  // namespace
+}  // namespace kessler::otm
