@@ -20,6 +20,15 @@ class CellList {
   template <typename F>
   void forEachWithin(const Vec3& q, double radius, F&& f) const;
 
+  // Calls f(cell) for every cell that may hold a position within `radius` of q; the binned
+  // positions of a cell are indexAt(s) for s in [cellBegin(cell), cellEnd(cell)).
+  template <typename F>
+  void forEachCellNear(const Vec3& q, double radius, F&& f) const;
+  long cellCount() const { return static_cast<long>(start_.size()) - 1; }
+  LocalIndex cellBegin(long cell) const { return start_[static_cast<std::size_t>(cell)]; }
+  LocalIndex cellEnd(long cell) const { return start_[static_cast<std::size_t>(cell) + 1]; }
+  LocalIndex indexAt(LocalIndex slot) const { return sorted_[static_cast<std::size_t>(slot)]; }
+
   double cellSize() const { return cell_; }
 
  private:
@@ -43,8 +52,7 @@ inline std::array<int, 3> CellList::cellOf(const Vec3& x) const {
 }
 
 template <typename F>
-void CellList::forEachWithin(const Vec3& q, double radius, F&& f) const {
-  const double r2 = radius * radius;
+void CellList::forEachCellNear(const Vec3& q, double radius, F&& f) const {
   std::array<int, 3> lo = cellOf(q - Vec3::Constant(radius));
   std::array<int, 3> hi = cellOf(q + Vec3::Constant(radius));
   for (int d = 0; d < 3; ++d) {
@@ -54,13 +62,18 @@ void CellList::forEachWithin(const Vec3& q, double radius, F&& f) const {
   }
   for (int k = lo[2]; k <= hi[2]; ++k)
     for (int j = lo[1]; j <= hi[1]; ++j)
-      for (int i = lo[0]; i <= hi[0]; ++i) {
-        const long c = flat(i, j, k);
-        for (LocalIndex s = start_[c]; s < start_[c + 1]; ++s) {
-          const double d2 = (sorted_x_[s] - q).squaredNorm();
-          if (d2 <= r2) f(sorted_[s], d2);
-        }
-      }
+      for (int i = lo[0]; i <= hi[0]; ++i) f(flat(i, j, k));
+}
+
+template <typename F>
+void CellList::forEachWithin(const Vec3& q, double radius, F&& f) const {
+  const double r2 = radius * radius;
+  forEachCellNear(q, radius, [&](long c) {
+    for (LocalIndex s = start_[c]; s < start_[c + 1]; ++s) {
+      const double d2 = (sorted_x_[s] - q).squaredNorm();
+      if (d2 <= r2) f(sorted_[s], d2);
+    }
+  });
 }
 
 }  // namespace kessler

@@ -15,40 +15,68 @@ LocalIndex Eigenerosion::apply(Model& model) {
   if (!active(model)) return 0;
   PointStore& points = model.points;
   const LocalIndex np = points.owned;
-  double max_eps = 0.0;
-  for (LocalIndex p = 0; p < np; ++p) max_eps = std::max(max_eps, settings_.erosion_radius * points.spacing(p));
-  cells_.build(points.x, np, max_eps);
-
   std::vector<double> gc(model.bodies.size()), nu(model.bodies.size());
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {
     const Material& material = *model.materials[model.bodies[b].material];
     gc[b] = material.fractureEnergy();
     nu[b] = material.poissonRatio();
   }
+
+  // Only intact points of eroding bodies take part (as candidates and as ball members), so the
+  // cell list holds just those: eroded debris spread over a large cloud would otherwise stretch
+  // the grid, and so every query. Cells of the mean ball radius, as in the neighbour search: a
+  // few strongly expanded points must not make every cell large.
+  candidate_x_.clear();
+  candidate_.clear();
+  double eps_sum = 0.0;
+  for (LocalIndex p = 0; p < np; ++p) {
+    if (points.eroded[p] || gc[points.body[p]] <= 0.0) continue;
+    candidate_x_.push_back(points.x[p]);
+    candidate_.push_back(p);
+    eps_sum += settings_.erosion_radius * points.spacing(p);
+  }
+  const auto count = static_cast<LocalIndex>(candidate_.size());
+  if (count == 0) return 0;
+  cells_.build(candidate_x_, count, eps_sum / count);
+  // G_p is C_eps times a mass-weighted mean of W over the ball, so it cannot exceed C_eps times
+  // the largest W in the cells the ball touches. Points whose bound stays below G_c (most of a
+  // target away from the impact) skip the ball sum; the decisions are exactly the same.
+  const long cells = cells_.cellCount();
+  cell_max_.assign(static_cast<std::size_t>(cells), 0.0);
+#pragma omp parallel for schedule(static)
+  for (long cell = 0; cell < cells; ++cell)
+    for (LocalIndex s = cells_.cellBegin(cell); s < cells_.cellEnd(cell); ++s)
+      cell_max_[cell] = std::max(cell_max_[cell], points.strain_energy[candidate_[cells_.indexAt(s)]]);
+
   erode_.assign(static_cast<std::size_t>(np), 0);
 #pragma omp parallel for schedule(dynamic, 256)
-  for (LocalIndex p = 0; p < np; ++p) {
+  for (LocalIndex c = 0; c < count; ++c) {
+    const LocalIndex p = candidate_[c];
     const int body = points.body[p];
-    if (points.eroded[p] || gc[body] <= 0.0) continue;
     const double eps = settings_.erosion_radius * points.spacing(p);
+    double bound = 0.0;
+    cells_.forEachCellNear(points.x[p], eps, [&](long cell) { bound = std::max(bound, cell_max_[cell]); });
+    // The margin covers the rounding of the weighted mean below.
+    if (erosionCalibration(eps, nu[body]) * bound * (1.0 + 1e-12) < gc[body]) continue;
     double mass = 0.0, energy = 0.0;
-    cells_.forEachWithin(points.x[p], eps, [&](LocalIndex q, double) {
-      if (points.eroded[q] || points.body[q] != body) return;
+    cells_.forEachWithin(points.x[p], eps, [&](LocalIndex k, double) {
+      const LocalIndex q = candidate_[k];
+      if (points.body[q] != body) return;
       mass += points.mass[q];
       energy += points.mass[q] * points.strain_energy[q];
     });
     const double release_rate = erosionCalibration(eps, nu[body]) * energy / mass;
     if (release_rate >= gc[body]) erode_[p] = 1;
   }
-  LocalIndex count = 0;
+  LocalIndex eroded = 0;
   for (LocalIndex p = 0; p < np; ++p) {
     if (!erode_[p]) continue;
     points.eroded[p] = 1;
     points.stress[p].setZero();
     points.viscous_pressure[p] = 0.0;
-    ++count;
+    ++eroded;
   }
-  return count;
+  return eroded;
 }
 
 }  // namespace kessler::otm

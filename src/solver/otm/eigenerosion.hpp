@@ -30,7 +30,10 @@ class Eigenerosion {
 
  private:
   Settings settings_;
-  CellList cells_;
+  CellList cells_;                   // over the candidates only (candidate_x_)
+  std::vector<Vec3> candidate_x_;     // intact points of eroding bodies ...
+  std::vector<LocalIndex> candidate_;  // ... and their point indices, in point order
+  std::vector<double> cell_max_;       // largest W of the candidates in each cell
   std::vector<std::uint8_t> erode_;
 };
 
