@@ -8,12 +8,14 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
 #include <limits>
 #include <optional>
 #include <sstream>
+#include <string_view>
 
 namespace kessler::io {
 
@@ -121,22 +123,61 @@ RunConfig parseTree(const Field& top, const fs::path& base_dir) {
   throw InputError(printable(fmt::format("{}:{}:{}: {}: {}", name, line, column, kind, e.msg)));
 }
 
+// The line (1-based) where a second YAML document starts, 0 if there is none: a '---' marker after
+// content, or content after a '...' end marker. Markers sit at column 0, where no block scalar of
+// a deck can hold them.
+int secondDocumentLine(const std::string& text) {
+  auto hasContent = [](std::string_view rest) {
+    const std::size_t first = rest.find_first_not_of(" \t\r");
+    return first != std::string_view::npos && rest[first] != '#';
+  };
+  std::istringstream in(text);
+  std::string line;
+  bool content = false, ended = false;
+  for (int number = 1; std::getline(in, line); ++number) {
+    const std::string_view view(line);
+    auto marker = [&](std::string_view m) {
+      return view.starts_with(m) && (view.size() == m.size() || std::isspace(static_cast<unsigned char>(view[m.size()])));
+    };
+    if (marker("---")) {
+      if (content || ended) return number;
+      content = hasContent(view.substr(3));
+    } else if (marker("...")) {
+      ended = true;
+    } else if (hasContent(view)) {
+      if (ended) return number;
+      content = true;
+    }
+  }
+  return 0;
+}
+
 RunConfig parseText(const std::string& text, const std::string& name, const fs::path& base_dir,
                     const std::vector<std::string>& overrides) {
   DeckSource source(name);
-  std::vector<YAML::Node> documents;
+  if (const int line = secondDocumentLine(text))
+    throw InputError(fmt::format("{}:{}:1: a second YAML document ('---'): a deck is one document", name, line));
+  // YAML::Load, not LoadAll: yaml-cpp 0.7's LoadAll loops forever, allocating, on a stray ',' in
+  // block context (yaml-cpp issue #1040, fixed upstream in PR #1319; found by fuzz_deck).
+  YAML::Node root;
   try {
-    documents = YAML::LoadAll(text);
+    root = YAML::Load(text);
   } catch (const YAML::Exception& e) {
     failYaml(name, e, "YAML syntax error");
   }
-  if (documents.empty() || (documents.size() == 1 && documents[0].IsNull()))
+  if (!root || root.IsNull()) {
+    // A null document from a file with content: yaml-cpp gave up on its first token (e.g. a ',').
+    std::istringstream in(text);
+    std::string line;
+    for (int number = 1; std::getline(in, line); ++number) {
+      const std::size_t first = line.find_first_not_of(" \t\r");
+      if (first == std::string::npos || line[first] == '#' || line.starts_with("---")) continue;
+      throw InputError(printable(fmt::format("{}:{}:{}: YAML syntax error: no YAML value starts here (got '{}')", name,
+                                             number, first + 1, line.substr(first, 40))));
+    }
     throw InputError(fmt::format("{}:1:1: the deck is empty", name));
-  YAML::Node root = documents[0];
+  }
   Field top(source, root, "", root.Mark());
-  if (documents.size() > 1)
-    Field(source, documents[1], "", documents[1].Mark())
-        .failBare("a second YAML document ('---'): a deck is one document");
   if (!root.IsMap())
     top.fail(
         "the deck must be a map of sections (title, materials, bodies, symmetry, solver, output, checkpoint, "
