@@ -71,12 +71,35 @@ LocalIndex Eigenerosion::apply(Model& model) {
   LocalIndex eroded = 0;
   for (LocalIndex p = 0; p < np; ++p) {
     if (!erode_[p]) continue;
+    releaseDebris(points, p, settings_.erosion_radius * points.spacing(p));
     points.eroded[p] = 1;
     points.stress[p].setZero();
     points.viscous_pressure[p] = 0.0;
     ++eroded;
   }
   return eroded;
+}
+
+// Serial, in point order, so the result does not depend on the thread count.
+void Eigenerosion::releaseDebris(PointStore& points, LocalIndex p, double eps) const {
+  const int body = points.body[p];
+  double mass = 0.0, mass_left = 0.0;
+  Vec3 momentum = Vec3::Zero();
+  cells_.forEachWithin(points.x[p], eps, [&](LocalIndex k, double) {
+    const LocalIndex q = candidate_[k];
+    if (points.body[q] != body) return;
+    mass += points.mass[q];
+    momentum += points.mass[q] * points.v[q];
+    if (!erode_[q]) mass_left += points.mass[q];
+  });
+  if (mass_left <= 0.0) return;  // nothing stays intact to take the difference: keep v_p
+  const Vec3 mean = momentum / mass;
+  const Vec3 dv = points.mass[p] * (points.v[p] - mean) / mass_left;
+  points.v[p] = mean;
+  cells_.forEachWithin(points.x[p], eps, [&](LocalIndex k, double) {
+    const LocalIndex q = candidate_[k];
+    if (points.body[q] == body && !erode_[q]) points.v[q] += dv;
+  });
 }
 
 }  // namespace kessler::otm

@@ -7,7 +7,12 @@
 // mode-I near-tip energy density (plane stress) over a ball of radius eps centred on the front
 // gives <W> = 3 (5 - 3 nu) K^2 / (64 E eps), hence C_eps = 64 eps / (3 (5 - 3 nu)) makes
 // G_p = K^2 / E = G_c exactly at Griffith's load (docs/theory.md §8).
-// An eroded point keeps its mass and momentum (debris), carries no stress and flies ballistically.
+// An eroded point keeps its mass, carries no stress and flies ballistically as debris. It leaves
+// with the mass-weighted mean velocity of the intact points of its ball, not with its own: the
+// FLIP-style velocity transfer leaves noise on point velocities under shocks (tens of percent of
+// the impact speed, invisible while the point moves with the nodes) that would otherwise become
+// the debris' flight velocity. The difference m_p (v_p - mean) goes, evenly by mass, to the
+// points of the ball that stay intact, so linear momentum is exact (docs/theory.md §8).
 #include "search/cell_list.hpp"
 #include "solver/otm/model.hpp"
 #include "solver/otm/settings.hpp"
@@ -29,6 +34,8 @@ class Eigenerosion {
   bool active(const Model& model) const;
 
  private:
+  void releaseDebris(PointStore& points, LocalIndex p, double eps) const;
+
   Settings settings_;
   CellList cells_;                   // over the candidates only (candidate_x_)
   std::vector<Vec3> candidate_x_;     // intact points of eroding bodies ...

@@ -14,11 +14,14 @@
 namespace kessler::otm {
 namespace {
 
-TEST(Eigenerosion, ErodesExactlyThePointsOfTheDefinition) {
+// Three bodies (two eroding, one not) with W scattered around the threshold: a hot spot at 1.5
+// times G_c / C_eps of a typical point, decaying over 2 mm, with a random factor per point, so the
+// ball averages land on both sides of the threshold; every tenth point is already eroded.
+Model hotSpotModel(const Settings& settings, double nu) {
   NeoHookeanParameters p;
   p.density = 2700.0;
   p.youngs_modulus = 70e9;
-  p.poisson_ratio = 0.33;
+  p.poisson_ratio = nu;
   p.fracture_energy = 100.0;
   auto brittle = std::make_shared<NeoHookean>("brittle", p);
   p.fracture_energy = 0.0;
@@ -31,10 +34,6 @@ TEST(Eigenerosion, ErodesExactlyThePointsOfTheDefinition) {
   addBody(model, "b", brittle, box(Vec3(8.5e-3, 0, 0), Vec3(12e-3, 6e-3, 3e-3), {4, 6, 3}), Vec3::Zero());
   addBody(model, "c", tough, box(Vec3(0, 7e-3, 0), Vec3(4e-3, 10e-3, 3e-3), {4, 3, 3}), Vec3::Zero());
   PointStore& points = model.points;
-  Settings settings;
-  const double nu = 0.33;
-  // A hot spot of W at 1.5 times the threshold G_c / C_eps of a typical point, decaying over 2 mm,
-  // with a random factor per point: the ball averages land on both sides of the threshold.
   const double threshold = 100.0 / erosionCalibration(settings.erosion_radius * points.spacing(0), nu);
   const Vec3 hot(6e-3, 3e-3, 1.5e-3);
   std::mt19937 random(7);
@@ -44,7 +43,14 @@ TEST(Eigenerosion, ErodesExactlyThePointsOfTheDefinition) {
     points.strain_energy[q] = 1.5 * threshold * std::exp(-0.5 * r2) * spread(random);
     points.eroded[q] = random() % 10 == 0;  // some already eroded: they take no part
   }
+  return model;
+}
 
+TEST(Eigenerosion, ErodesExactlyThePointsOfTheDefinition) {
+  const Settings settings;
+  const double nu = 0.33;
+  Model model = hotSpotModel(settings, nu);
+  PointStore& points = model.points;
   std::vector<std::uint8_t> expected(points.size(), 0);
   for (LocalIndex a = 0; a < points.size(); ++a) {
     const double gc = model.materials[model.bodies[points.body[a]].material]->fractureEnergy();
@@ -76,6 +82,47 @@ TEST(Eigenerosion, ErodesExactlyThePointsOfTheDefinition) {
   // The problem must exercise both outcomes, or it proves nothing.
   EXPECT_GT(newly, 10);
   EXPECT_LT(newly, points.size() / 2);
+}
+
+// Debris leaves with the mass-weighted mean velocity of its ball, and the difference goes to the
+// ball's intact points: each body's momentum is unchanged, and the first point released (whose
+// ball nobody has touched yet) moves exactly with the brute-force ball mean.
+TEST(Eigenerosion, DebrisTakesTheBallVelocityAndMomentumIsExact) {
+  const Settings settings;
+  const double nu = 0.33;
+  Model model = hotSpotModel(settings, nu);
+  PointStore& points = model.points;
+  std::mt19937 random(11);
+  std::normal_distribution<double> noise(0.0, 500.0);
+  for (LocalIndex q = 0; q < points.size(); ++q) points.v[q] = Vec3(1000.0 + noise(random), noise(random), noise(random));
+  auto momentum = [&](int body) {
+    Vec3 sum = Vec3::Zero();
+    for (LocalIndex q = 0; q < points.size(); ++q)
+      if (points.body[q] == body) sum += points.mass[q] * points.v[q];
+    return sum;
+  };
+  const Vec3 before_a = momentum(0), before_b = momentum(1);
+  const std::vector<std::uint8_t> eroded_before = points.eroded;
+  const std::vector<Vec3> v_before = points.v;
+
+  Eigenerosion erosion(settings);
+  ASSERT_GT(erosion.apply(model), 10);
+  EXPECT_LT((momentum(0) - before_a).norm(), 1e-12 * before_a.norm());
+  EXPECT_LT((momentum(1) - before_b).norm(), 1e-12 * before_b.norm());
+
+  LocalIndex first = 0;
+  while (!points.eroded[first] || eroded_before[first]) ++first;
+  const double eps = settings.erosion_radius * points.spacing(first);
+  double mass = 0.0;
+  Vec3 sum = Vec3::Zero();
+  for (LocalIndex q = 0; q < points.size(); ++q) {
+    if (eroded_before[q] || points.body[q] != points.body[first] || (points.x[q] - points.x[first]).norm() > eps) continue;
+    mass += points.mass[q];
+    sum += points.mass[q] * v_before[q];
+  }
+  EXPECT_LT((points.v[first] - sum / mass).norm(), 1e-9 * (sum / mass).norm());
+  // The noise (500 m/s per component) must not survive in the debris that left.
+  EXPECT_GT((v_before[first] - points.v[first]).norm(), 10.0);
 }
 
 }  // namespace
