@@ -16,7 +16,7 @@ namespace kessler::io {
 namespace {
 
 // Bumped whenever the layout changes; an older or newer checkpoint is refused with a message.
-constexpr std::int64_t format_version = 2;
+constexpr std::int64_t format_version = 3;
 
 // Vec3 and Mat3 are stored as runs of 3 and 9 doubles, straight from the store.
 static_assert(sizeof(Vec3) == 3 * sizeof(double));
@@ -50,7 +50,7 @@ void pointFields(Store& s, Visit&& visit) {
   visit("temperature", s.temperature);
   visit("damage", s.damage);
   visit("strain_energy", s.strain_energy);
-  visit("plastic_work", s.plastic_work);
+  visit("ductile_work", s.ductile_work);
   visit("viscous_pressure", s.viscous_pressure);
   visit("be", s.be);
   visit("eroded", s.eroded);

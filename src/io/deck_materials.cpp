@@ -284,10 +284,20 @@ double parseFractureEnergy(const MapField& material, double base) {
   return gc;
 }
 
+// The stress triaxiality below which plastic work does not drive eigenerosion ("-0.333", Bao &
+// Wierzbicki's cut-off); `none` counts all plastic work.
+double parseFractureTriaxiality(const MapField& material, double base) {
+  std::optional<Field> field = material.find("fracture_min_triaxiality");
+  if (!field) return base;
+  if (field->node().IsScalar() && field->node().Scalar() == "none") return -std::numeric_limits<double>::infinity();
+  return field->quantity(units::dimensionless);
+}
+
 MaterialConfig parseImpact(const std::string& name, const Field& field, const fs::path& base_dir) {
   std::vector<std::string_view> allowed{"model", "density"};
   allowed.insert(allowed.end(), std::begin(impact_only_keys), std::end(impact_only_keys));
   allowed.push_back("fracture_energy");
+  allowed.push_back("fracture_min_triaxiality");
   MapField map = field.map(allowed);
   MaterialConfig material;
   material.name = name;
@@ -309,6 +319,7 @@ MaterialConfig parseImpact(const std::string& name, const Field& field, const fs
   p.viscosity = parseBlock(map, "viscosity", keys::viscosity, base ? &base->viscosity : &default_viscosity, false);
   p.pressure_floor = parseTensionCutoff(map, base ? base->pressure_floor : p.pressure_floor);
   p.fracture_energy = parseFractureEnergy(map, base ? base->fracture_energy : 0.0);
+  p.fracture_min_triaxiality = parseFractureTriaxiality(map, base ? base->fracture_min_triaxiality : p.fracture_min_triaxiality);
   return material;
 }
 

@@ -105,6 +105,9 @@ void impactMaterial(YAML::Emitter& out, const MaterialConfig& material) {
   if (std::isfinite(p.pressure_floor)) scalar(out, "tension_cutoff", p.pressure_floor, "Pa");
   block(out, "viscosity", nullptr, p.viscosity, keys::viscosity);
   scalar(out, "fracture_energy", p.fracture_energy, "J/m^2; 0: no eigenerosion");
+  // All plastic work is the default, and -infinity has no deck spelling.
+  if (std::isfinite(p.fracture_min_triaxiality))
+    scalar(out, "fracture_min_triaxiality", p.fracture_min_triaxiality, "plastic work below it does not erode");
 }
 
 void body(YAML::Emitter& out, const BodyConfig& body, const RunConfig& config) {

@@ -5,6 +5,7 @@
 #include "material/strength/radial_return.hpp"
 
 #include <cmath>
+#include <limits>
 
 namespace kessler {
 
@@ -14,6 +15,9 @@ ImpactMaterial::ImpactMaterial(std::string name, ImpactMaterialParameters parame
     throw InputError(fmt::format("shear_modulus must not be negative (got {})", p_.shear_modulus));
   p_.thermal.check();
   p_.viscosity.check();
+  if (std::isnan(p_.fracture_min_triaxiality) || p_.fracture_min_triaxiality == std::numeric_limits<double>::infinity())
+    throw InputError(fmt::format("fracture_min_triaxiality must be a finite number or none (got {})",
+                                 p_.fracture_min_triaxiality));
 }
 
 double ImpactMaterial::referenceSoundSpeed() const {
@@ -41,7 +45,7 @@ namespace {
 
 // Everything one point needs besides its own state: resolved once per range.
 struct UpdateConstants {
-  double dt, shear_modulus, cv, beta, floor, c_linear, c_quadratic;
+  double dt, shear_modulus, cv, beta, floor, c_linear, c_quadratic, min_triaxiality;
   const std::optional<strength::JohnsonCookDamage>* damage;
 };
 
@@ -115,12 +119,16 @@ void updatePoint(const Eos& eos, const Law& law, const UpdateConstants& k, Point
   points.energy[p] = e_new;
   // Energy density for eigenerosion (per reference volume): elastic deviatoric energy, elastic
   // volumetric energy in tension only (compression does not open cracks), and the plastic work
-  // (ductile fracture energy); see docs/theory.md.
+  // done at a stress triaxiality -(p + q)/sigma_eq of at least the material's cut-off (Bao &
+  // Wierzbicki, Eng. Fract. Mech. 72:1049, 2005: metals do not fracture below -1/3; in a shock the
+  // pressure exceeds the flow stress a hundredfold); docs/theory.md §8.
   const double bulk = rho * std::max(state.sound_speed2, 0.0);
-  points.plastic_work[p] += r.plastic_work * volume / points.volume0[p];
+  const double sigma_eq = std::sqrt(1.5) * r.deviatoric_stress.norm();
+  if (std::isinf(k.min_triaxiality) || -(pressure + q) >= k.min_triaxiality * sigma_eq)
+    points.ductile_work[p] += r.plastic_work * volume / points.volume0[p];
   const double tension = pressure < 0.0 && bulk > 0.0 ? pressure * pressure / (2.0 * bulk) : 0.0;
   const double elastic = k.shear_modulus > 0.0 ? r.deviatoric_stress.squaredNorm() / (4.0 * k.shear_modulus) : 0.0;
-  points.strain_energy[p] = (elastic + tension) * J + points.plastic_work[p];
+  points.strain_energy[p] = (elastic + tension) * J + points.ductile_work[p];
   points.viscous_pressure[p] = q;
   const double c = std::sqrt(std::max(state.sound_speed2, 0.0) + 4.0 * k.shear_modulus / (3.0 * rho));
   // Signal speed with the viscosity correction of the stable step (e.g. LS-DYNA theory manual):
@@ -147,6 +155,7 @@ void ImpactMaterial::update(PointStore& points, LocalIndex begin, LocalIndex end
                           p_.pressure_floor,
                           p_.viscosity.linear,
                           p_.viscosity.quadratic,
+                          p_.fracture_min_triaxiality,
                           &damage};
   std::visit(
       [&](const auto& eos, const auto& law) {

@@ -38,6 +38,9 @@ struct ImpactMaterialParameters {
   double pressure_floor = -std::numeric_limits<double>::infinity();  // tension cut-off, Pa
   ViscosityParameters viscosity;
   double fracture_energy = 0.0;  // G_c for eigenerosion, J/m^2 (0: no eigenerosion)
+  // Plastic work drives eigenerosion only where the stress triaxiality (mean stress / von Mises
+  // stress) is at least this; -infinity: all of it. Bao & Wierzbicki's cut-off is -1/3.
+  double fracture_min_triaxiality = -std::numeric_limits<double>::infinity();
 };
 
 class ImpactMaterial final : public Material {

@@ -36,7 +36,7 @@ void NodeStore::permute(const std::vector<LocalIndex>& order) {
 
 void PointStore::permute(const std::vector<LocalIndex>& order) {
   permuteAll(order, x.size(), id, body, x, v, mass, volume, volume0, spacing0, F, dF, stress, energy, sound_speed,
-             plastic_strain, temperature, damage, strain_energy, plastic_work, viscous_pressure, be, eroded, lambda);
+             plastic_strain, temperature, damage, strain_energy, ductile_work, viscous_pressure, be, eroded, lambda);
 }
 
 void NodeStore::resize(std::size_t n) {
@@ -70,7 +70,7 @@ void PointStore::resize(std::size_t n) {
   temperature.resize(n, 0.0);
   damage.resize(n, 0.0);
   strain_energy.resize(n, 0.0);
-  plastic_work.resize(n, 0.0);
+  ductile_work.resize(n, 0.0);
   viscous_pressure.resize(n, 0.0);
   be.resize(n, Mat3::Identity());
   eroded.resize(n, 0);

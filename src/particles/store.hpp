@@ -48,7 +48,7 @@ struct PointStore {
   std::vector<double> temperature;      // K
   std::vector<double> damage;           // Johnson-Cook damage D in [0, 1]
   std::vector<double> strain_energy;    // energy density driving eigenerosion, J/m^3 of reference volume
-  std::vector<double> plastic_work;     // accumulated plastic work, J/m^3 of reference volume
+  std::vector<double> ductile_work;     // plastic work above the triaxiality cut-off, J/m^3 of reference volume
   std::vector<double> viscous_pressure; // artificial bulk viscosity q, Pa (part of stress)
   std::vector<Mat3> be;                 // elastic left Cauchy-Green tensor (plasticity)
   std::vector<std::uint8_t> eroded;     // 1: failed, carries no stress

@@ -8,7 +8,9 @@
 #include "verify/fixtures.hpp"
 #include "verify/impact_problems.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace kessler::verify {
 
@@ -64,11 +66,13 @@ Profile measure(const otm::Model& model, int target_body) {
 
 FlyerPlateResult runFlyerPlate() {
   const library::Entry& al = library::find("Al6061-T6");
-  // The Hugoniot check needs no failure model: the library's JC damage set stays off, as in decks,
-  // and so does eigenerosion (the library's fracture energy).
+  // The library's JC damage set stays off, as in decks. Eigenerosion stays on with the library's
+  // fracture energy and Bao & Wierzbicki's triaxiality cut-off of -1/3: a shock is compression far
+  // below it, so no point may erode (counting all plastic work, the whole flyer erodes and the
+  // particle velocity comes out at 58 m/s instead of 1000).
   ImpactMaterialParameters parameters = al.parameters;
   parameters.damage.reset();
-  parameters.fracture_energy = 0.0;
+  parameters.fracture_min_triaxiality = -1.0 / 3.0;
   auto material = std::make_shared<ImpactMaterial>(al.name, parameters);
   const double v = 2000.0, w = 2 * cell;
   otm::Model model;
@@ -108,6 +112,11 @@ FlyerPlateResult runFlyerPlate() {
   r.reference_pressure = ref.rho0 * us * up;
   r.steps = integrator.steps();
   r.points = model.points.owned;
+  // The shocked target only: the flyer's free rear face releases into tension after the shock
+  // has crossed it (docs/validation.md), which is not what this problem checks.
+  const BodyInfo& shocked = model.bodies[static_cast<std::size_t>(target)];
+  r.eroded = std::count(model.points.eroded.begin() + shocked.point_begin,
+                        model.points.eroded.begin() + shocked.point_end, std::uint8_t{1});
   return r;
 }
 
@@ -122,12 +131,12 @@ Outcome flyerPlate() {
   o.reference = r.reference_pressure;
   o.tolerance = 0.03;
   o = compare(o);
-  // All three must hold: up within 2%, Us and P within 3%.
-  o.passed = o.passed && e_up <= 0.02 && e_us <= 0.03;
+  // All must hold: up within 2%, Us and P within 3%, and no point of the target eroded by the shock.
+  o.passed = o.passed && e_up <= 0.02 && e_us <= 0.03 && r.eroded == 0;
   o.note = fmt::format("up {:.1f} m/s vs {:.0f} ({:.2f}%, tol 2%); Us {:.0f} m/s vs {:.0f} ({:.2f}%, tol 3%); "
-                       "{} points, {} steps",
+                       "{} target points eroded (must be 0); {} points, {} steps",
                        r.particle_velocity, r.reference_velocity, 100 * e_up, r.shock_speed, r.reference_shock_speed,
-                       100 * e_us, r.points, r.steps);
+                       100 * e_us, r.eroded, r.points, r.steps);
   return o;
 }
 

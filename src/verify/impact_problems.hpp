@@ -14,6 +14,7 @@ struct FlyerPlateResult {
   double particle_velocity, shock_speed, pressure;
   double reference_velocity, reference_shock_speed, reference_pressure;
   long steps, points;
+  long eroded;  // points of the target eroded by eigenerosion: none may erode in a shock
 };
 
 FlyerPlateResult runFlyerPlate();

@@ -65,7 +65,7 @@ long differences(const otm::Model& a, const otm::Model& b) {
          differing(p.stress, q.stress) + differing(p.energy, q.energy) + differing(p.sound_speed, q.sound_speed) +
          differing(p.plastic_strain, q.plastic_strain) + differing(p.temperature, q.temperature) +
          differing(p.damage, q.damage) + differing(p.strain_energy, q.strain_energy) +
-         differing(p.plastic_work, q.plastic_work) + differing(p.viscous_pressure, q.viscous_pressure) +
+         differing(p.ductile_work, q.ductile_work) + differing(p.viscous_pressure, q.viscous_pressure) +
          differing(p.be, q.be) + differing(p.eroded, q.eroded) + differing(p.lambda, q.lambda) + differing(m.id, n.id) +
          differing(m.body, n.body) + differing(m.x, n.x) + differing(m.v, n.v) + differing(m.mass, n.mass) +
          differing(m.momentum, n.momentum) + differing(m.force, n.force) + differing(m.constrained, n.constrained) +

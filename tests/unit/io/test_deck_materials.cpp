@@ -174,7 +174,7 @@ TEST(DeckMaterials, ChoosesTheModelFromTheKeys) {
             "fracture_energy)");
   EXPECT_EQ(errorOf("  al: { library: Al6061-T6, youngs_modulus: 70 GPa }"),
             "materials.al.youngs_modulus: unknown key (allowed: model, density, library, shear_modulus, eos, "
-            "strength, failure, thermal, tension_cutoff, viscosity, fracture_energy)");
+            "strength, failure, thermal, tension_cutoff, viscosity, fracture_energy, fracture_min_triaxiality)");
 }
 
 TEST(DeckMaterials, FractureEnergyHasUnitsAndDefaultsToTheLibrary) {
@@ -187,6 +187,17 @@ TEST(DeckMaterials, FractureEnergyHasUnitsAndDefaultsToTheLibrary) {
   EXPECT_EQ(errorOf("  al: { library: Al6061-T6, fracture_energy: -1 }"),
             "materials.al.fracture_energy: must not be negative (0 switches eigenerosion off) (got '-1')");
   EXPECT_TRUE(errorOf("  al: { library: Al6061-T6, fracture_energy: 100 kJ }").starts_with("materials.al.fracture_energy: "));
+}
+
+TEST(DeckMaterials, FractureTriaxialityIsANumberOrNone) {
+  EXPECT_EQ(material("  al: { library: Al6061-T6, fracture_min_triaxiality: -0.25 }").impact.fracture_min_triaxiality,
+            -0.25);
+  EXPECT_EQ(material("  al: { library: Al6061-T6, fracture_min_triaxiality: none }").impact.fracture_min_triaxiality,
+            -std::numeric_limits<double>::infinity());
+  EXPECT_EQ(material("  al: { library: Al6061-T6 }").impact.fracture_min_triaxiality,
+            -std::numeric_limits<double>::infinity());
+  EXPECT_TRUE(errorOf("  al: { library: Al6061-T6, fracture_min_triaxiality: low }")
+                  .starts_with("materials.al.fracture_min_triaxiality: "));
 }
 
 TEST(DeckMaterials, TensionCutoffNoneRemovesTheFloor) {

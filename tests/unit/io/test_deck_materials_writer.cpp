@@ -91,6 +91,7 @@ TEST(ResolvedDeckMaterials, WriteEveryParameterInSIUnits) {
                                "melt_temperature: 1356",
                                "min_failure_strain: 0.01",
                                "tension_cutoff: -1200000000",
+                               "fracture_min_triaxiality: -0.333",
                                "model: tillotson",
                                "E0: 5000000",
                                "model: polynomial",
