@@ -11,8 +11,8 @@ struct MieGruneisenRef {
 };
 
 struct FlyerPlateResult {
-  double particle_velocity, shock_speed, pressure;
-  double reference_velocity, reference_shock_speed, reference_pressure;
+  double particle_velocity, shock_speed, pressure, energy;  // energy: specific internal energy, J/kg
+  double reference_velocity, reference_shock_speed, reference_pressure, reference_energy;
   long steps, points;
 };
 
