@@ -25,6 +25,7 @@ const std::vector<Problem>& problems() {
        adiabaticHeating},
       {"flyer-plate", "symmetric Al 6061-T6 plate impact at 2 km/s against the Hugoniot", flyerPlate},
       {"taylor-bar", "copper Taylor bar: final length and footprint radius", taylorBar},
+      {"taylor-bar-coarse", "copper Taylor bar at 1 mm (CI): length and radius, length converging", taylorBarCoarse},
       {"griffith", "centre-cracked plate fails at Griffith's stress (eigenerosion)", griffith},
   };
   return all;
