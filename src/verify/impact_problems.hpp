@@ -11,8 +11,8 @@ struct MieGruneisenRef {
 };
 
 struct FlyerPlateResult {
-  double particle_velocity, shock_speed, pressure;
-  double reference_velocity, reference_shock_speed, reference_pressure;
+  double particle_velocity, shock_speed, pressure, energy;  // energy: specific internal energy, J/kg
+  double reference_velocity, reference_shock_speed, reference_pressure, reference_energy;
   long steps, points;
   long eroded;  // points of the target eroded by eigenerosion: none may erode in a shock
 };
@@ -24,11 +24,18 @@ struct TaylorBarResult {
   double length = 0.0;            // final length, m
   double footprint_radius = 0.0;  // radius of the impact face, m
   long steps = 0, points = 0;
+  // The time step at the start and the end, and what limits it at the end (the point of smallest
+  // h0 lambda_min / c: its smallest principal stretch and position) against the smallest distance
+  // between two nodes, for the resolution study (docs/validation.md).
+  double dt_initial = 0.0, dt_final = 0.0;
+  double min_stretch = 0.0, limiting_r = 0.0, limiting_z = 0.0, limiting_h0 = 0.0;
+  double min_node_distance = 0.0;
 };
 
-// mesh_size in metres; CI uses the coarse default.
-TaylorBarResult runTaylorBar(double mesh_size);
-Outcome taylorBar();
+// mesh_size in metres; cfl: the factor on the stable time step (otm::Settings::cfl).
+TaylorBarResult runTaylorBar(double mesh_size, double cfl = 0.3);
+Outcome taylorBar();        // 0.8 mm (long)
+Outcome taylorBarCoarse();  // 1 mm and 1.6 mm (CI)
 
 }  // namespace kessler::verify
 

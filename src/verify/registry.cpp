@@ -21,8 +21,11 @@ const std::vector<Problem>& problems() {
       {"eos-tabular", "SESAME table of a Mie-Gruneisen EOS against the analytic EOS", eosTabular},
       {"radial-return", "log-strain radial return along uniaxial-strain and pure-shear paths against analytic answers",
        radialReturn},
+      {"adiabatic-heating", "temperature rise of plastic work in isochoric shear against the closed form",
+       adiabaticHeating},
       {"flyer-plate", "symmetric Al 6061-T6 plate impact at 2 km/s against the Hugoniot", flyerPlate},
       {"taylor-bar", "copper Taylor bar: final length and footprint radius", taylorBar},
+      {"taylor-bar-coarse", "copper Taylor bar at 1 mm (CI): length and radius, length converging", taylorBarCoarse},
       {"griffith", "centre-cracked plate fails at Griffith's stress (eigenerosion)", griffith},
   };
   return all;
