@@ -36,6 +36,87 @@ int Neighbourhoods::gather(const Model& model, LocalIndex p, double scale, Scrat
   return static_cast<int>(s.node.size());
 }
 
+// A point near a strongly compressed or re-entrant surface can fall outside the hull of the nodes
+// within its cut-off: it is retried from lambda = 0 with radii 1.5, 2.25 and 3.375 times larger
+// before the run stops. Rare, so the connectivity is then rebuilt with the retried rows.
+void Neighbourhoods::retryFailedPoints(Model& model) {
+  PointStore& points = model.points;
+  Connectivity& conn = model.connectivity;
+  const LocalIndex np = points.owned;
+  std::vector<LocalIndex> retry;
+  for (const Scratch& s : scratch_) retry.insert(retry.end(), s.retry.begin(), s.retry.end());
+  if (retry.empty()) return;
+  std::sort(retry.begin(), retry.end());  // threads hold increasing, disjoint chunks already
+
+  Scratch& s = scratch_.front();
+  s.N.clear();
+  s.dN.clear();
+  s.rows.clear();
+  std::vector<std::size_t> start(retry.size() + 1, 0);
+  LocalIndex failed = np;
+  lme::Result failure;
+  for (std::size_t k = 0; k < retry.size(); ++k) {
+    const LocalIndex p = retry[k];
+    const double h = points.spacing(p);
+    lme::Result r;
+    int n = 0;
+    for (int attempt = 1; attempt < 4; ++attempt) {
+      n = gather(model, p, std::pow(1.5, attempt), s);
+      s.offsets.resize(static_cast<std::size_t>(n));
+      for (int i = 0; i < n; ++i) s.offsets[i] = points.x[p] - model.nodes.x[s.node[i]];
+      s.N.resize(start[k] + static_cast<std::size_t>(n));
+      s.dN.resize(start[k] + static_cast<std::size_t>(n));
+      points.lambda[p].setZero();  // the warm start may be what failed
+      r = lme::shapeFunctions(s.offsets, lme::beta(settings_.lme_gamma, h), h, points.lambda[p],
+                              std::span<double>(s.N.data() + start[k], static_cast<std::size_t>(n)),
+                              std::span<Vec3>(s.dN.data() + start[k], static_cast<std::size_t>(n)));
+      if (r.status == lme::Status::converged) break;
+    }
+    s.rows.insert(s.rows.end(), s.node.begin(), s.node.begin() + n);
+    start[k + 1] = start[k] + static_cast<std::size_t>(n);
+    count_[p] = n;
+    if (r.status != lme::Status::converged && failed == np) {
+      failed = p;
+      failure = r;
+    }
+  }
+  if (failed < np) {
+    const Vec3& x = points.x[failed];
+    throw NumericalError(fmt::format(
+        "LME shape functions failed at material point {} of body '{}' at ({:.6g}, {:.6g}, {:.6g}) m: {} "
+        "({} nodes, residual {:.3g} h after {} iterations)",
+        points.id[failed], model.bodies[points.body[failed]].name, x[0], x[1], x[2], lme::describe(failure.status),
+        count_[failed], failure.residual, failure.iterations));
+  }
+  // New rows in point order: the old rows of the points that converged, the retried ones.
+  Connectivity rebuilt;
+  rebuilt.offset.assign(static_cast<std::size_t>(np) + 1, 0);
+  for (LocalIndex p = 0; p < np; ++p) rebuilt.offset[p + 1] = rebuilt.offset[p] + count_[p];
+  const auto entries = static_cast<std::size_t>(rebuilt.offset[np]);
+  rebuilt.node.resize(entries);
+  rebuilt.N.resize(entries);
+  rebuilt.dN.resize(entries);
+  std::size_t k = 0;
+  for (LocalIndex p = 0; p < np; ++p) {
+    const Index to = rebuilt.offset[p];
+    if (k < retry.size() && retry[k] == p) {
+      std::copy(s.rows.begin() + static_cast<std::ptrdiff_t>(start[k]), s.rows.begin() + static_cast<std::ptrdiff_t>(start[k + 1]), rebuilt.node.begin() + to);
+      std::copy(s.N.begin() + static_cast<std::ptrdiff_t>(start[k]), s.N.begin() + static_cast<std::ptrdiff_t>(start[k + 1]), rebuilt.N.begin() + to);
+      std::copy(s.dN.begin() + static_cast<std::ptrdiff_t>(start[k]), s.dN.begin() + static_cast<std::ptrdiff_t>(start[k + 1]), rebuilt.dN.begin() + to);
+      ++k;
+      continue;
+    }
+    const Index from = conn.offset[p], length = conn.offset[p + 1] - from;
+    std::copy_n(conn.node.begin() + from, length, rebuilt.node.begin() + to);
+    std::copy_n(conn.N.begin() + from, length, rebuilt.N.begin() + to);
+    std::copy_n(conn.dN.begin() + from, length, rebuilt.dN.begin() + to);
+  }
+  conn.offset = std::move(rebuilt.offset);
+  conn.node = std::move(rebuilt.node);
+  conn.N = std::move(rebuilt.N);
+  conn.dN = std::move(rebuilt.dN);
+}
+
 void Neighbourhoods::update(Model& model) {
   NodeStore& nodes = model.nodes;
   PointStore& points = model.points;
@@ -61,62 +142,27 @@ void Neighbourhoods::update(Model& model) {
   count_.assign(static_cast<std::size_t>(np), 0);
   conn.offset.assign(static_cast<std::size_t>(np) + 1, 0);
   const std::size_t bodies = model.bodies.size();
-
-  // First failing point in index order, so the diagnosis does not depend on the threads.
-  LocalIndex failed = np;
-  lme::Result failure;
   double shape_time = 0.0;
 
+  // Two passes, so that the shape functions are written straight into the connectivity (a copy
+  // per thread would double the largest arrays of a run): the search first, keeping only the
+  // node lists, then the shape functions at their final place once the offsets are known.
 #pragma omp parallel num_threads(threads)
   {
     const int t = omp_get_thread_num();
     const int nt = omp_get_num_threads();
     Scratch& s = scratch_[static_cast<std::size_t>(t)];
     s.nearest_foreign.resize(bodies);
-    // A static contiguous chunk per thread keeps each thread's buffer in point order.
+    s.retry.clear();
+    // A static contiguous chunk per thread keeps each thread's node lists in point order.
     const LocalIndex begin = static_cast<LocalIndex>(static_cast<Index>(np) * t / nt);
     const LocalIndex end = static_cast<LocalIndex>(static_cast<Index>(np) * (t + 1) / nt);
-    std::vector<LocalIndex>& all_nodes = s.rows;
-    s.N.clear();
-    s.dN.clear();
-    all_nodes.clear();
-    Stopwatch shape_watch;
-    double my_shape_time = 0.0;
-    LocalIndex my_failed = np;
-    lme::Result my_failure;
+    s.rows.clear();
     for (LocalIndex p = begin; p < end; ++p) {
       // Eroded points are debris flying ballistically: no neighbourhood, no shape functions.
-      if (points.eroded[p]) {
-        count_[p] = 0;
-        continue;
-      }
-      // A point near a strongly compressed or re-entrant surface can fall outside the hull of
-      // the nodes within its cut-off: retry from lambda = 0 with a larger radius before failing.
-      int n = 0;
-      lme::Result r;
-      const std::size_t first = s.N.size();
-      for (int attempt = 0; attempt < 4; ++attempt) {
-        const double scale = attempt == 0 ? 1.0 : std::pow(1.5, attempt);
-        n = gather(model, p, scale, s);
-        shape_watch.restart();
-        s.offsets.resize(static_cast<std::size_t>(n));
-        for (int i = 0; i < n; ++i) s.offsets[i] = points.x[p] - nodes.x[s.node[i]];
-        s.N.resize(first + static_cast<std::size_t>(n));
-        s.dN.resize(first + static_cast<std::size_t>(n));
-        std::span<double> N(s.N.data() + first, static_cast<std::size_t>(n));
-        std::span<Vec3> dN(s.dN.data() + first, static_cast<std::size_t>(n));
-        const double h = points.spacing(p);
-        if (attempt > 0) points.lambda[p].setZero();  // the warm start may be what failed
-        r = lme::shapeFunctions(s.offsets, lme::beta(settings_.lme_gamma, h), h, points.lambda[p], N, dN);
-        my_shape_time += shape_watch.seconds();
-        if (r.status == lme::Status::converged) break;
-      }
-      count_[p] = n;
-      if (r.status != lme::Status::converged && my_failed == np) {
-        my_failed = p;
-        my_failure = r;
-      }
-      all_nodes.insert(all_nodes.end(), s.node.begin(), s.node.end());
+      if (points.eroded[p]) continue;
+      count_[p] = gather(model, p, 1.0, s);
+      s.rows.insert(s.rows.end(), s.node.begin(), s.node.end());
     }
 #pragma omp barrier
 #pragma omp single
@@ -127,27 +173,25 @@ void Neighbourhoods::update(Model& model) {
       conn.N.resize(entries);
       conn.dN.resize(entries);
     }
-    const Index at = conn.offset[begin];
-    std::copy(all_nodes.begin(), all_nodes.end(), conn.node.begin() + at);
-    std::copy(s.N.begin(), s.N.end(), conn.N.begin() + at);
-    std::copy(s.dN.begin(), s.dN.end(), conn.dN.begin() + at);
-#pragma omp critical
-    {
-      if (my_failed < failed) {
-        failed = my_failed;
-        failure = my_failure;
-      }
-      shape_time = std::max(shape_time, my_shape_time);
+    std::copy(s.rows.begin(), s.rows.end(), conn.node.begin() + conn.offset[begin]);
+    Stopwatch shape_watch;
+    for (LocalIndex p = begin; p < end; ++p) {
+      if (points.eroded[p]) continue;
+      const Index first = conn.offset[p];
+      const auto n = static_cast<std::size_t>(count_[p]);
+      s.offsets.resize(n);
+      for (std::size_t i = 0; i < n; ++i) s.offsets[i] = points.x[p] - nodes.x[conn.node[first + static_cast<Index>(i)]];
+      const double h = points.spacing(p);
+      const lme::Result r = lme::shapeFunctions(s.offsets, lme::beta(settings_.lme_gamma, h), h, points.lambda[p],
+                                                std::span<double>(conn.N.data() + first, n),
+                                                std::span<Vec3>(conn.dN.data() + first, n));
+      if (r.status != lme::Status::converged) s.retry.push_back(p);
     }
+    const double my_shape_time = shape_watch.seconds();
+#pragma omp critical
+    shape_time = std::max(shape_time, my_shape_time);
   }
-  if (failed < np) {
-    const Vec3& x = points.x[failed];
-    throw NumericalError(fmt::format(
-        "LME shape functions failed at material point {} of body '{}' at ({:.6g}, {:.6g}, {:.6g}) m: {} "
-        "({} nodes, residual {:.3g} h after {} iterations)",
-        points.id[failed], model.bodies[points.body[failed]].name, x[0], x[1], x[2], lme::describe(failure.status),
-        count_[failed], failure.residual, failure.iterations));
-  }
+  retryFailedPoints(model);
   conn.buildTranspose(nodes.size(), transpose_scratch_);
   const double total = watch.seconds();
   shape_seconds_ = shape_time;

@@ -27,7 +27,8 @@ class Neighbourhoods {
   struct Scratch {
     std::vector<LocalIndex> node;   // neighbours of the point being processed
     std::vector<LocalIndex> rows;   // neighbours of all points of this thread, in order
-    std::vector<double> N;
+    std::vector<LocalIndex> retry;  // points of this thread whose shape functions failed
+    std::vector<double> N;          // shape functions of retried points
     std::vector<Vec3> dN;
     std::vector<std::pair<LocalIndex, double>> candidates;
     std::vector<double> nearest_foreign;  // squared distance per body
@@ -37,6 +38,8 @@ class Neighbourhoods {
   // Collects the neighbour nodes of point p within `scale` times its cut-off radius into
   // s.node; returns their count.
   int gather(const Model& model, LocalIndex p, double scale, Scratch& s) const;
+  // Retries the points whose shape functions failed with larger radii; throws if one still fails.
+  void retryFailedPoints(Model& model);
 
   Settings settings_;
   CellList cells_;
