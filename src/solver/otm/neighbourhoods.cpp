@@ -174,8 +174,12 @@ void Neighbourhoods::update(Model& model) {
       conn.dN.resize(entries);
     }
     std::copy(s.rows.begin(), s.rows.end(), conn.node.begin() + conn.offset[begin]);
+#pragma omp barrier
+    // Each point's shape functions depend on its own row only, so any schedule gives the same
+    // result: dynamic, since the cost varies (eroded points cost nothing, contact rows are longer).
     Stopwatch shape_watch;
-    for (LocalIndex p = begin; p < end; ++p) {
+#pragma omp for schedule(dynamic, 256) nowait
+    for (LocalIndex p = 0; p < np; ++p) {
       if (points.eroded[p]) continue;
       const Index first = conn.offset[p];
       const auto n = static_cast<std::size_t>(count_[p]);
