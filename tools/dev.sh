@@ -44,7 +44,7 @@ asan() {
   sanitizer_environment
   cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DKESSLER_SANITIZE=ON >/dev/null
   cmake --build build-asan -j"$(nproc)"
-  ctest --test-dir build-asan -L unit -j"$(nproc)" --output-on-failure
+  OMP_WAIT_POLICY=passive ctest --test-dir build-asan -L unit -j"$(nproc)" --output-on-failure
   build-asan/src/app/kessler run examples/elastic-sphere-plate.yaml --out build-asan/example-1us \
     --set solver.end_time="1 us" --set output.every="0.5 us" --quiet
   echo "asan: unit tests and a 1 us impact ran clean"
@@ -88,7 +88,9 @@ case "${1:-}" in
   test)
     install_missing "${packages[@]}"
     build
-    ctest --test-dir build -j"$(nproc)" -LE long --output-on-failure
+    # Tests run side by side, each with OpenMP threads: waiting threads must sleep, not spin, or
+    # two tests on the same cores stall each other at every barrier (minutes instead of seconds).
+    OMP_WAIT_POLICY=passive ctest --test-dir build -j"$(nproc)" -LE long --output-on-failure
     ;;
   build)
     install_missing "${packages[@]}"

@@ -173,18 +173,23 @@ void Neighbourhoods::update(Model& model) {
       conn.N.resize(entries);
       conn.dN.resize(entries);
     }
-    std::copy(s.rows.begin(), s.rows.end(), conn.node.begin() + conn.offset[begin]);
-#pragma omp barrier
-    // Each point's shape functions depend on its own row only, so any schedule gives the same
-    // result: dynamic, since the cost varies (eroded points cost nothing, contact rows are longer).
+    // Each point's row and shape functions depend on nothing but the point, so any schedule gives
+    // the same result: dynamic, since the cost varies (eroded points cost nothing, contact rows
+    // are longer). The row comes from the node list of the thread that searched the point.
     Stopwatch shape_watch;
 #pragma omp for schedule(dynamic, 256) nowait
     for (LocalIndex p = 0; p < np; ++p) {
       if (points.eroded[p]) continue;
+      int o = static_cast<int>(static_cast<Index>(p) * nt / np);  // the searching thread, within one
+      while (static_cast<Index>(np) * o / nt > p) --o;
+      while (static_cast<Index>(np) * (o + 1) / nt <= p) ++o;
+      const auto owner_begin = static_cast<LocalIndex>(static_cast<Index>(np) * o / nt);
       const Index first = conn.offset[p];
       const auto n = static_cast<std::size_t>(count_[p]);
+      const LocalIndex* row = scratch_[static_cast<std::size_t>(o)].rows.data() + (first - conn.offset[owner_begin]);
+      std::copy_n(row, n, conn.node.begin() + first);
       s.offsets.resize(n);
-      for (std::size_t i = 0; i < n; ++i) s.offsets[i] = points.x[p] - nodes.x[conn.node[first + static_cast<Index>(i)]];
+      for (std::size_t i = 0; i < n; ++i) s.offsets[i] = points.x[p] - nodes.x[row[i]];
       const double h = points.spacing(p);
       const lme::Result r = lme::shapeFunctions(s.offsets, lme::beta(settings_.lme_gamma, h), h, points.lambda[p],
                                                 std::span<double>(conn.N.data() + first, n),
