@@ -319,7 +319,8 @@ MaterialConfig parseImpact(const std::string& name, const Field& field, const fs
   p.viscosity = parseBlock(map, "viscosity", keys::viscosity, base ? &base->viscosity : &default_viscosity, false);
   p.pressure_floor = parseTensionCutoff(map, base ? base->pressure_floor : p.pressure_floor);
   p.fracture_energy = parseFractureEnergy(map, base ? base->fracture_energy : 0.0);
-  p.fracture_min_triaxiality = parseFractureTriaxiality(map, base ? base->fracture_min_triaxiality : p.fracture_min_triaxiality);
+  p.fracture_min_triaxiality =
+      parseFractureTriaxiality(map, base ? base->fracture_min_triaxiality : p.fracture_min_triaxiality);
   return material;
 }
 

@@ -16,8 +16,8 @@ ImpactMaterial::ImpactMaterial(std::string name, ImpactMaterialParameters parame
   p_.thermal.check();
   p_.viscosity.check();
   if (std::isnan(p_.fracture_min_triaxiality) || p_.fracture_min_triaxiality == std::numeric_limits<double>::infinity())
-    throw InputError(fmt::format("fracture_min_triaxiality must be a finite number or none (got {})",
-                                 p_.fracture_min_triaxiality));
+    throw InputError(
+        fmt::format("fracture_min_triaxiality must be a finite number or none (got {})", p_.fracture_min_triaxiality));
 }
 
 double ImpactMaterial::referenceSoundSpeed() const {
@@ -89,7 +89,8 @@ void updatePoint(const Eos& eos, const Law& law, const UpdateConstants& k, Point
   const Mat3 l_dt = 2.0 * (dF - Mat3::Identity()) * (dF + Mat3::Identity()).inverse();
   const Mat3 d_dt = 0.5 * (l_dt + l_dt.transpose());
   const Mat3 d_dev = d_dt - d_dt.trace() / 3.0 * Mat3::Identity();
-  const double deviatoric_work = 0.5 * (s_old + r.deviatoric_stress).cwiseProduct(d_dev).sum() * 0.5 * (volume + volume_old);
+  const double deviatoric_work =
+      0.5 * (s_old + r.deviatoric_stress).cwiseProduct(d_dev).sum() * 0.5 * (volume + volume_old);
   const double viscous_work = -q * dv;
 
   const double e_old = points.energy[p];

@@ -4,7 +4,9 @@
 
 namespace kessler::otm {
 
-double erosionCalibration(double eps, double nu) { return 64.0 * eps / (3.0 * (5.0 - 3.0 * nu)); }
+double erosionCalibration(double eps, double nu) {
+  return 64.0 * eps / (3.0 * (5.0 - 3.0 * nu));
+}
 
 bool Eigenerosion::active(const Model& model) const {
   return std::any_of(model.materials.begin(), model.materials.end(),

@@ -21,8 +21,7 @@ int Neighbourhoods::gather(const Model& model, LocalIndex p, double scale, Scrat
   double radius = scale * lme::cutoffRadius(settings_.lme_gamma, h, settings_.lme_tolerance);
   for (int attempt = 0;; ++attempt) {
     s.candidates.clear();
-    cells_.forEachWithin(points.x[p], radius,
-                         [&](LocalIndex a, double d2) { s.candidates.emplace_back(a, d2); });
+    cells_.forEachWithin(points.x[p], radius, [&](LocalIndex a, double d2) { s.candidates.emplace_back(a, d2); });
     // Seizing contact: another body's nodes count only once that body is close enough.
     std::fill(s.nearest_foreign.begin(), s.nearest_foreign.end(), std::numeric_limits<double>::infinity());
     for (const auto& [a, d2] : s.candidates)
@@ -46,7 +45,7 @@ void Neighbourhoods::retryFailedPoints(Model& model) {
   std::vector<LocalIndex> retry;
   for (const Scratch& s : scratch_) retry.insert(retry.end(), s.retry.begin(), s.retry.end());
   if (retry.empty()) return;
-  std::sort(retry.begin(), retry.end());  // threads hold increasing, disjoint chunks already
+  std::sort(retry.begin(), retry.end());  // in point order, as the rows
 
   Scratch& s = scratch_.front();
   s.N.clear();
@@ -82,11 +81,11 @@ void Neighbourhoods::retryFailedPoints(Model& model) {
   }
   if (failed < np) {
     const Vec3& x = points.x[failed];
-    throw NumericalError(fmt::format(
-        "LME shape functions failed at material point {} of body '{}' at ({:.6g}, {:.6g}, {:.6g}) m: {} "
-        "({} nodes, residual {:.3g} h after {} iterations)",
-        points.id[failed], model.bodies[points.body[failed]].name, x[0], x[1], x[2], lme::describe(failure.status),
-        count_[failed], failure.residual, failure.iterations));
+    throw NumericalError(
+        fmt::format("LME shape functions failed at material point {} of body '{}' at ({:.6g}, {:.6g}, {:.6g}) m: {} "
+                    "({} nodes, residual {:.3g} h after {} iterations)",
+                    points.id[failed], model.bodies[points.body[failed]].name, x[0], x[1], x[2],
+                    lme::describe(failure.status), count_[failed], failure.residual, failure.iterations));
   }
   // New rows in point order: the old rows of the points that converged, the retried ones.
   Connectivity rebuilt;
@@ -100,9 +99,12 @@ void Neighbourhoods::retryFailedPoints(Model& model) {
   for (LocalIndex p = 0; p < np; ++p) {
     const Index to = rebuilt.offset[p];
     if (k < retry.size() && retry[k] == p) {
-      std::copy(s.rows.begin() + static_cast<std::ptrdiff_t>(start[k]), s.rows.begin() + static_cast<std::ptrdiff_t>(start[k + 1]), rebuilt.node.begin() + to);
-      std::copy(s.N.begin() + static_cast<std::ptrdiff_t>(start[k]), s.N.begin() + static_cast<std::ptrdiff_t>(start[k + 1]), rebuilt.N.begin() + to);
-      std::copy(s.dN.begin() + static_cast<std::ptrdiff_t>(start[k]), s.dN.begin() + static_cast<std::ptrdiff_t>(start[k + 1]), rebuilt.dN.begin() + to);
+      std::copy(s.rows.begin() + static_cast<std::ptrdiff_t>(start[k]),
+                s.rows.begin() + static_cast<std::ptrdiff_t>(start[k + 1]), rebuilt.node.begin() + to);
+      std::copy(s.N.begin() + static_cast<std::ptrdiff_t>(start[k]),
+                s.N.begin() + static_cast<std::ptrdiff_t>(start[k + 1]), rebuilt.N.begin() + to);
+      std::copy(s.dN.begin() + static_cast<std::ptrdiff_t>(start[k]),
+                s.dN.begin() + static_cast<std::ptrdiff_t>(start[k + 1]), rebuilt.dN.begin() + to);
       ++k;
       continue;
     }
@@ -191,9 +193,9 @@ void Neighbourhoods::update(Model& model) {
       s.offsets.resize(n);
       for (std::size_t i = 0; i < n; ++i) s.offsets[i] = points.x[p] - nodes.x[row[i]];
       const double h = points.spacing(p);
-      const lme::Result r = lme::shapeFunctions(s.offsets, lme::beta(settings_.lme_gamma, h), h, points.lambda[p],
-                                                std::span<double>(conn.N.data() + first, n),
-                                                std::span<Vec3>(conn.dN.data() + first, n));
+      const lme::Result r =
+          lme::shapeFunctions(s.offsets, lme::beta(settings_.lme_gamma, h), h, points.lambda[p],
+                              std::span<double>(conn.N.data() + first, n), std::span<Vec3>(conn.dN.data() + first, n));
       if (r.status != lme::Status::converged) s.retry.push_back(p);
     }
     const double my_shape_time = shape_watch.seconds();

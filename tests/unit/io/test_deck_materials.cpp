@@ -186,7 +186,8 @@ TEST(DeckMaterials, FractureEnergyHasUnitsAndDefaultsToTheLibrary) {
             1e3);
   EXPECT_EQ(errorOf("  al: { library: Al6061-T6, fracture_energy: -1 }"),
             "materials.al.fracture_energy: must not be negative (0 switches eigenerosion off) (got '-1')");
-  EXPECT_TRUE(errorOf("  al: { library: Al6061-T6, fracture_energy: 100 kJ }").starts_with("materials.al.fracture_energy: "));
+  EXPECT_TRUE(
+      errorOf("  al: { library: Al6061-T6, fracture_energy: 100 kJ }").starts_with("materials.al.fracture_energy: "));
 }
 
 TEST(DeckMaterials, FractureTriaxialityIsANumberOrNone) {
@@ -207,8 +208,9 @@ TEST(DeckMaterials, TensionCutoffNoneRemovesTheFloor) {
 }
 
 TEST(DeckMaterials, CommandLineSettingsOverrideLibraryKeys) {
-  const RunConfig c = parseDeckString(deckWith("  al: { library: OFHC-copper }"), deck_name,
-                                      {"materials.al.strength.A=120 MPa", "materials.al.failure={model: johnson-cook}"});
+  const RunConfig c =
+      parseDeckString(deckWith("  al: { library: OFHC-copper }"), deck_name,
+                      {"materials.al.strength.A=120 MPa", "materials.al.failure={model: johnson-cook}"});
   EXPECT_EQ(std::get<strength::JohnsonCook>(c.materials[0].impact.yield).parameters().A, 120e6);
   EXPECT_TRUE(c.materials[0].impact.damage.has_value());
 }

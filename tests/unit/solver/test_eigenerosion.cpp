@@ -94,7 +94,8 @@ TEST(Eigenerosion, DebrisTakesTheBallVelocityAndMomentumIsExact) {
   PointStore& points = model.points;
   std::mt19937 random(11);
   std::normal_distribution<double> noise(0.0, 500.0);
-  for (LocalIndex q = 0; q < points.size(); ++q) points.v[q] = Vec3(1000.0 + noise(random), noise(random), noise(random));
+  for (LocalIndex q = 0; q < points.size(); ++q)
+    points.v[q] = Vec3(1000.0 + noise(random), noise(random), noise(random));
   auto momentum = [&](int body) {
     Vec3 sum = Vec3::Zero();
     for (LocalIndex q = 0; q < points.size(); ++q)
@@ -116,7 +117,8 @@ TEST(Eigenerosion, DebrisTakesTheBallVelocityAndMomentumIsExact) {
   double mass = 0.0;
   Vec3 sum = Vec3::Zero();
   for (LocalIndex q = 0; q < points.size(); ++q) {
-    if (eroded_before[q] || points.body[q] != points.body[first] || (points.x[q] - points.x[first]).norm() > eps) continue;
+    if (eroded_before[q] || points.body[q] != points.body[first] || (points.x[q] - points.x[first]).norm() > eps)
+      continue;
     mass += points.mass[q];
     sum += points.mass[q] * v_before[q];
   }
