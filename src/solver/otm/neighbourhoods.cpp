@@ -35,6 +35,15 @@ int Neighbourhoods::gather(const Model& model, LocalIndex p, double scale, Scrat
   return static_cast<int>(s.node.size());
 }
 
+lme::Result Neighbourhoods::shapeFunctionsAt(Model& model, LocalIndex p, std::span<const LocalIndex> row,
+                                             std::span<double> N, std::span<Vec3> dN, Scratch& s) const {
+  const PointStore& points = model.points;
+  s.offsets.resize(row.size());
+  for (std::size_t i = 0; i < row.size(); ++i) s.offsets[i] = points.x[p] - model.nodes.x[row[i]];
+  const double h = points.spacing(p);
+  return lme::shapeFunctions(s.offsets, lme::beta(settings_.lme_gamma, h), h, model.points.lambda[p], N, dN);
+}
+
 // A point near a strongly compressed or re-entrant surface can fall outside the hull of the nodes
 // within its cut-off: it is retried from lambda = 0 with radii 1.5, 2.25 and 3.375 times larger
 // before the run stops. Rare, so the connectivity is then rebuilt with the retried rows.
@@ -56,19 +65,16 @@ void Neighbourhoods::retryFailedPoints(Model& model) {
   lme::Result failure;
   for (std::size_t k = 0; k < retry.size(); ++k) {
     const LocalIndex p = retry[k];
-    const double h = points.spacing(p);
     lme::Result r;
     int n = 0;
     for (int attempt = 1; attempt < 4; ++attempt) {
       n = gather(model, p, std::pow(1.5, attempt), s);
-      s.offsets.resize(static_cast<std::size_t>(n));
-      for (int i = 0; i < n; ++i) s.offsets[i] = points.x[p] - model.nodes.x[s.node[i]];
-      s.N.resize(start[k] + static_cast<std::size_t>(n));
-      s.dN.resize(start[k] + static_cast<std::size_t>(n));
+      const auto size = static_cast<std::size_t>(n);
+      s.N.resize(start[k] + size);
+      s.dN.resize(start[k] + size);
       points.lambda[p].setZero();  // the warm start may be what failed
-      r = lme::shapeFunctions(s.offsets, lme::beta(settings_.lme_gamma, h), h, points.lambda[p],
-                              std::span<double>(s.N.data() + start[k], static_cast<std::size_t>(n)),
-                              std::span<Vec3>(s.dN.data() + start[k], static_cast<std::size_t>(n)));
+      r = shapeFunctionsAt(model, p, s.node, std::span<double>(s.N.data() + start[k], size),
+                           std::span<Vec3>(s.dN.data() + start[k], size), s);
       if (r.status == lme::Status::converged) break;
     }
     s.rows.insert(s.rows.end(), s.node.begin(), s.node.begin() + n);
@@ -95,23 +101,21 @@ void Neighbourhoods::retryFailedPoints(Model& model) {
   rebuilt.node.resize(entries);
   rebuilt.N.resize(entries);
   rebuilt.dN.resize(entries);
+  auto copyRow = [&](const LocalIndex* node, const double* N, const Vec3* dN, Index length, Index to) {
+    std::copy_n(node, length, rebuilt.node.begin() + to);
+    std::copy_n(N, length, rebuilt.N.begin() + to);
+    std::copy_n(dN, length, rebuilt.dN.begin() + to);
+  };
   std::size_t k = 0;
   for (LocalIndex p = 0; p < np; ++p) {
     const Index to = rebuilt.offset[p];
     if (k < retry.size() && retry[k] == p) {
-      std::copy(s.rows.begin() + static_cast<std::ptrdiff_t>(start[k]),
-                s.rows.begin() + static_cast<std::ptrdiff_t>(start[k + 1]), rebuilt.node.begin() + to);
-      std::copy(s.N.begin() + static_cast<std::ptrdiff_t>(start[k]),
-                s.N.begin() + static_cast<std::ptrdiff_t>(start[k + 1]), rebuilt.N.begin() + to);
-      std::copy(s.dN.begin() + static_cast<std::ptrdiff_t>(start[k]),
-                s.dN.begin() + static_cast<std::ptrdiff_t>(start[k + 1]), rebuilt.dN.begin() + to);
+      copyRow(s.rows.data() + start[k], s.N.data() + start[k], s.dN.data() + start[k], count_[p], to);
       ++k;
-      continue;
+    } else {
+      const Index from = conn.offset[p];
+      copyRow(conn.node.data() + from, conn.N.data() + from, conn.dN.data() + from, count_[p], to);
     }
-    const Index from = conn.offset[p], length = conn.offset[p + 1] - from;
-    std::copy_n(conn.node.begin() + from, length, rebuilt.node.begin() + to);
-    std::copy_n(conn.N.begin() + from, length, rebuilt.N.begin() + to);
-    std::copy_n(conn.dN.begin() + from, length, rebuilt.dN.begin() + to);
   }
   conn.offset = std::move(rebuilt.offset);
   conn.node = std::move(rebuilt.node);
@@ -190,12 +194,9 @@ void Neighbourhoods::update(Model& model) {
       const auto n = static_cast<std::size_t>(count_[p]);
       const LocalIndex* row = scratch_[static_cast<std::size_t>(o)].rows.data() + (first - conn.offset[owner_begin]);
       std::copy_n(row, n, conn.node.begin() + first);
-      s.offsets.resize(n);
-      for (std::size_t i = 0; i < n; ++i) s.offsets[i] = points.x[p] - nodes.x[row[i]];
-      const double h = points.spacing(p);
       const lme::Result r =
-          lme::shapeFunctions(s.offsets, lme::beta(settings_.lme_gamma, h), h, points.lambda[p],
-                              std::span<double>(conn.N.data() + first, n), std::span<Vec3>(conn.dN.data() + first, n));
+          shapeFunctionsAt(model, p, std::span<const LocalIndex>(row, n), std::span<double>(conn.N.data() + first, n),
+                           std::span<Vec3>(conn.dN.data() + first, n), s);
       if (r.status != lme::Status::converged) s.retry.push_back(p);
     }
     const double my_shape_time = shape_watch.seconds();

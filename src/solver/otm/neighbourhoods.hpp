@@ -3,10 +3,12 @@
 // cell-list search, with the seizing-contact policy across bodies, and the LME shape
 // functions there. Results go to Model::connectivity in point order, identical for any
 // thread count.
+#include "approx/lme.hpp"
 #include "search/cell_list.hpp"
 #include "solver/otm/model.hpp"
 #include "solver/otm/settings.hpp"
 
+#include <span>
 #include <vector>
 
 namespace kessler::otm {
@@ -38,6 +40,9 @@ class Neighbourhoods {
   // Collects the neighbour nodes of point p within `scale` times its cut-off radius into
   // s.node; returns their count.
   int gather(const Model& model, LocalIndex p, double scale, Scratch& s) const;
+  // LME shape functions of point p over the nodes `row` (warm-started from its lambda).
+  lme::Result shapeFunctionsAt(Model& model, LocalIndex p, std::span<const LocalIndex> row, std::span<double> N,
+                               std::span<Vec3> dN, Scratch& s) const;
   // Retries the points whose shape functions failed with larger radii; throws if one still fails.
   void retryFailedPoints(Model& model);
 
