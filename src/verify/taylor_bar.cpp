@@ -8,8 +8,6 @@
 #include "verify/fixtures.hpp"
 #include "verify/impact_problems.hpp"
 
-#include <Eigen/Eigenvalues>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -63,9 +61,7 @@ TaylorBarResult runTaylorBar(double mesh_size, double cfl) {
   const PointStore& points = model.points;
   double limit = std::numeric_limits<double>::infinity();
   for (LocalIndex q = 0; q < points.owned; ++q) {
-    Eigen::SelfAdjointEigenSolver<Mat3> eigen;
-    eigen.computeDirect(points.F[q].transpose() * points.F[q], Eigen::EigenvaluesOnly);
-    const double stretch = std::sqrt(std::max(eigen.eigenvalues()[0], 0.0));
+    const double stretch = otm::smallestStretch(points.F[q]);
     if (points.eroded[q] || points.spacing0[q] * stretch / points.sound_speed[q] >= limit) continue;
     limit = points.spacing0[q] * stretch / points.sound_speed[q];
     r.min_stretch = stretch;

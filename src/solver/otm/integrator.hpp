@@ -12,6 +12,10 @@
 
 namespace kessler::otm {
 
+// The smallest principal stretch of F (the square root of the smallest eigenvalue of F^T F): the
+// time step's length scale is the reference spacing times it.
+double smallestStretch(const Mat3& F);
+
 struct Energies {
   double kinetic = 0.0;   // 1/2 sum m_p |v_p|^2
   double internal = 0.0;  // sum m_p e_p
