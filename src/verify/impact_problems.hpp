@@ -1,5 +1,6 @@
 #pragma once
 // Verification problems of the impact materials (whole runs).
+#include "core/types.hpp"
 #include "verify/problem.hpp"
 
 #include <fmt/format.h>
@@ -45,10 +46,16 @@ struct GriffithResult {
   double failure_stress = 0.0;  // remote stress when the crack first grows, Pa (0: never)
   double reference = 0.0;
   long steps = 0, points = 0;
+  double failure_time = 0.0, fail_time_reference = 0.0;  // s: when it failed; when sigma_ref is reached
+  Vec3 first_eroded = Vec3::Zero();                       // m: where the crack first grew
 };
 
-// cells_per_half_crack: resolution a/h.
-GriffithResult runGriffith(int cells_per_half_crack);
+struct GriffithCase {
+  int cells_per_half_crack = 4;  // resolution a/h
+  int thickness_cells = 2;       // points through the thickness
+  double erosion_radius = 2.0;   // eps / h (otm::Settings::erosion_radius)
+};
+GriffithResult runGriffith(const GriffithCase& c);
 Outcome griffith();
 
 }  // namespace kessler::verify

@@ -12,7 +12,61 @@
 
 namespace kessler::otm {
 
-int Neighbourhoods::gather(const Model& model, LocalIndex p, double scale, Scratch& s) const {
+void Neighbourhoods::buildOccluders(const Model& model, double reach) {
+  const PointStore& points = model.points;
+  eroded_x_.clear();
+  eroded_body_.clear();
+  intact_x_.clear();
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  double spacing_sum = 0.0;
+  for (LocalIndex p = 0; p < points.owned; ++p) {
+    if (points.eroded[p]) continue;
+    lo = lo.cwiseMin(points.x[p]);
+    hi = hi.cwiseMax(points.x[p]);
+    spacing_sum += points.spacing(p);
+    intact_x_.push_back(points.x[p]);
+  }
+  lo.array() -= reach;
+  hi.array() += reach;
+  // Debris that has flown away from every intact point hides nothing.
+  for (LocalIndex q = 0; q < points.owned; ++q) {
+    const Vec3& x = points.x[q];
+    if (!points.eroded[q] || (x.array() < lo.array()).any() || (x.array() > hi.array()).any()) continue;
+    eroded_x_.push_back(x);
+    eroded_body_.push_back(points.body[q]);
+  }
+  if (eroded_x_.empty() || intact_x_.empty()) {
+    eroded_x_.clear();
+    return;
+  }
+  const double spacing = spacing_sum / static_cast<double>(intact_x_.size());
+  eroded_cells_.build(eroded_x_, static_cast<LocalIndex>(eroded_x_.size()), reach);
+  intact_cells_.build(intact_x_, static_cast<LocalIndex>(intact_x_.size()), spacing);
+}
+
+void Neighbourhoods::collectOccluders(const Vec3& xp, int body, double radius, Scratch& s) const {
+  s.occluders.clear();
+  if (eroded_x_.empty()) return;
+  eroded_cells_.forEachWithin(xp, radius, [&](LocalIndex k, double) {
+    if (eroded_body_[k] == body) s.occluders.push_back(eroded_x_[k]);
+  });
+}
+
+bool Neighbourhoods::hidden(const Vec3& xp, const Vec3& xa, double spacing, const Scratch& s) const {
+  constexpr int samples = 6;
+  for (int k = 1; k < samples; ++k) {
+    const Vec3 y = xp + (static_cast<double>(k) / samples) * (xa - xp);
+    double eroded2 = spacing * spacing;  // only eroded points this near count
+    for (const Vec3& e : s.occluders) eroded2 = std::min(eroded2, (e - y).squaredNorm());
+    if (eroded2 >= spacing * spacing) continue;
+    bool intact_nearer = false;
+    intact_cells_.forEachWithin(y, std::sqrt(eroded2), [&](LocalIndex, double) { intact_nearer = true; });
+    if (!intact_nearer) return true;
+  }
+  return false;
+}
+
+int Neighbourhoods::gather(const Model& model, LocalIndex p, double scale, bool visibility, Scratch& s) const {
   const NodeStore& nodes = model.nodes;
   const PointStore& points = model.points;
   const double h = points.spacing(p);
@@ -29,6 +83,12 @@ int Neighbourhoods::gather(const Model& model, LocalIndex p, double scale, Scrat
     s.node.clear();
     for (const auto& [a, d2] : s.candidates)
       if (nodes.body[a] == own || s.nearest_foreign[nodes.body[a]] <= contact2) s.node.push_back(a);
+    if (visibility) {
+      collectOccluders(points.x[p], own, radius, s);
+      if (!s.occluders.empty())
+        std::erase_if(s.node,
+                      [&](LocalIndex a) { return nodes.body[a] == own && hidden(points.x[p], nodes.x[a], h, s); });
+    }
     if (static_cast<int>(s.node.size()) >= settings_.min_neighbours || attempt == 12) break;
     radius *= 1.25;
   }
@@ -45,8 +105,8 @@ lme::Result Neighbourhoods::shapeFunctionsAt(Model& model, LocalIndex p, std::sp
 }
 
 // A point near a strongly compressed or re-entrant surface can fall outside the hull of the nodes
-// within its cut-off: it is retried from lambda = 0 with radii 1.5, 2.25 and 3.375 times larger
-// before the run stops. Rare, so the connectivity is then rebuilt with the retried rows.
+// within its cut-off: it is retried from lambda = 0 with radii 1.5, 2.25 and 3.375 times larger,
+// then with its plain radius and no visibility test, before the run stops. Rare, so the connectivity is then rebuilt with the retried rows.
 void Neighbourhoods::retryFailedPoints(Model& model) {
   PointStore& points = model.points;
   Connectivity& conn = model.connectivity;
@@ -67,8 +127,9 @@ void Neighbourhoods::retryFailedPoints(Model& model) {
     const LocalIndex p = retry[k];
     lme::Result r;
     int n = 0;
-    for (int attempt = 1; attempt < 4; ++attempt) {
-      n = gather(model, p, std::pow(1.5, attempt), s);
+    // The last attempt ignores visibility: a point boxed in by eroded points keeps its nodes.
+    for (int attempt = 1; attempt < 5; ++attempt) {
+      n = gather(model, p, attempt < 4 ? std::pow(1.5, attempt) : 1.0, attempt < 4, s);
       const auto size = static_cast<std::size_t>(n);
       s.N.resize(start[k] + size);
       s.dN.resize(start[k] + size);
@@ -142,6 +203,7 @@ void Neighbourhoods::update(Model& model) {
   }
   const double cell_size = intact > 0 ? radius_sum / intact : 1.0;
   cells_.build(nodes.x, nodes.size(), std::max(cell_size, 1e-300));
+  buildOccluders(model, cell_size);
 
   const int threads = omp_get_max_threads();
   scratch_.resize(static_cast<std::size_t>(threads));
@@ -167,7 +229,7 @@ void Neighbourhoods::update(Model& model) {
     for (LocalIndex p = begin; p < end; ++p) {
       // Eroded points are debris flying ballistically: no neighbourhood, no shape functions.
       if (points.eroded[p]) continue;
-      count_[p] = gather(model, p, 1.0, s);
+      count_[p] = gather(model, p, 1.0, true, s);
       s.rows.insert(s.rows.end(), s.node.begin(), s.node.end());
     }
 #pragma omp barrier

@@ -35,11 +35,22 @@ class Neighbourhoods {
     std::vector<std::pair<LocalIndex, double>> candidates;
     std::vector<double> nearest_foreign;  // squared distance per body
     std::vector<Vec3> offsets;
+    std::vector<Vec3> occluders;  // eroded points near the point being processed
   };
 
   // Collects the neighbour nodes of point p within `scale` times its cut-off radius into
-  // s.node; returns their count.
-  int gather(const Model& model, LocalIndex p, double scale, Scratch& s) const;
+  // s.node; returns their count. With `visibility`, nodes hidden behind eroded points are left
+  // out (see hidden()).
+  int gather(const Model& model, LocalIndex p, double scale, bool visibility, Scratch& s) const;
+  // Visibility across cracks: node position xa is hidden from point p when the segment between
+  // them crosses eroded material, i.e. a sample on it lies nearer an eroded point (of
+  // s.occluders, within `spacing`) than any intact one. collectOccluders: the eroded points
+  // within `radius` of xp, into s.occluders (none: nothing is hidden).
+  void collectOccluders(const Vec3& xp, int body, double radius, Scratch& s) const;
+  bool hidden(const Vec3& xp, const Vec3& xa, double spacing, const Scratch& s) const;
+  // The points that decide visibility: the intact ones, and the eroded ones within `reach` of
+  // them (debris further away hides nothing).
+  void buildOccluders(const Model& model, double reach);
   // LME shape functions of point p over the nodes `row` (warm-started from its lambda).
   lme::Result shapeFunctionsAt(Model& model, LocalIndex p, std::span<const LocalIndex> row, std::span<double> N,
                                std::span<Vec3> dN, Scratch& s) const;
@@ -48,6 +59,9 @@ class Neighbourhoods {
 
   Settings settings_;
   CellList cells_;
+  CellList eroded_cells_, intact_cells_;
+  std::vector<Vec3> eroded_x_, intact_x_;
+  std::vector<int> eroded_body_;
   std::vector<Scratch> scratch_;  // one per thread
   std::vector<int> count_;
   std::vector<Index> transpose_scratch_;

@@ -1,0 +1,68 @@
+// Visibility across cracks (solver/otm/neighbourhoods.hpp): once a band of points across a body
+// has eroded, no intact point on one side keeps a node on the far side of the band, and the
+// shape functions stay a partition of unity; without the band such connections exist (so the
+// test can fail).
+#include "geometry/structured_mesh.hpp"
+#include "material/neo_hookean.hpp"
+#include "solver/otm/neighbourhoods.hpp"
+#include "solver/otm/setup.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace kessler::otm {
+namespace {
+
+constexpr double h = 1e-3;
+
+Model plate() {
+  NeoHookeanParameters p;
+  p.density = 2700.0;
+  p.youngs_modulus = 70e9;
+  p.poisson_ratio = 0.33;
+  Model model;
+  addBody(model, "plate", std::make_shared<NeoHookean>("al", p),
+          geometry::discretise(
+              geometry::structuredBoxMesh(geometry::Box{Vec3(0, -4 * h, 0), Vec3(8 * h, 4 * h, 2 * h)}, {8, 8, 2})),
+          Vec3::Zero());
+  return model;
+}
+
+// Connections from intact points beyond the band y in (0, h) to nodes on the far side of it.
+long connectionsAcross(const Model& model) {
+  const PointStore& points = model.points;
+  const Connectivity& conn = model.connectivity;
+  long across = 0;
+  for (LocalIndex p = 0; p < points.owned; ++p) {
+    if (points.eroded[p]) continue;
+    for (Index k = conn.offset[p]; k < conn.offset[p + 1]; ++k) {
+      const double y = model.nodes.x[conn.node[k]][1];
+      across += (points.x[p][1] > h && y < 0.5 * h) || (points.x[p][1] < 0.0 && y > 0.5 * h);
+    }
+  }
+  return across;
+}
+
+TEST(Visibility, AnErodedBandCutsTheNeighbourhoods) {
+  const Settings settings;
+  Model intact = plate();
+  Neighbourhoods(settings).update(intact);
+  EXPECT_GT(connectionsAcross(intact), 1000);
+
+  Model cracked = plate();
+  for (LocalIndex p = 0; p < cracked.points.owned; ++p)
+    if (cracked.points.x[p][1] > 0.0 && cracked.points.x[p][1] < h) cracked.points.eroded[p] = 1;
+  Neighbourhoods(settings).update(cracked);
+  EXPECT_EQ(connectionsAcross(cracked), 0);
+  const Connectivity& conn = cracked.connectivity;
+  for (LocalIndex p = 0; p < cracked.points.owned; ++p) {
+    if (cracked.points.eroded[p]) continue;
+    double sum = 0.0;
+    for (Index k = conn.offset[p]; k < conn.offset[p + 1]; ++k) sum += conn.N[k];
+    EXPECT_NEAR(sum, 1.0, 1e-9) << "point " << p;
+  }
+}
+
+}  // namespace
+}  // namespace kessler::otm
