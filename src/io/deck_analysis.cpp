@@ -19,13 +19,6 @@ namespace {
 // Bodies moving at least this fraction of the fastest body's speed are the projectile.
 constexpr double projectile_speed_fraction = 0.5;
 
-bool boolean(const Field& field) {
-  const std::string text = field.text("true or false");
-  if (text == "true" || text == "yes" || text == "on") return true;
-  if (text == "false" || text == "no" || text == "off") return false;
-  field.fail("must be true or false");
-}
-
 int bodyIndex(const Field& field, const std::vector<BodyConfig>& bodies) {
   const std::string name = field.text("a body name");
   for (std::size_t i = 0; i < bodies.size(); ++i)
@@ -140,8 +133,8 @@ AnalysisConfig parseAnalysis(const std::optional<Field>& field, const std::vecto
     map = field->map(
         {"enabled", "projectile", "plates", "shot_direction", "cloud_reference", "link_stretch", "plots", "rear_wall"});
   auto find = [&](std::string_view key) { return map ? map->find(key) : std::nullopt; };
-  if (std::optional<Field> enabled = find("enabled")) a.enabled = boolean(*enabled);
-  if (std::optional<Field> plots = find("plots")) a.plots = boolean(*plots);
+  if (std::optional<Field> enabled = find("enabled")) a.enabled = enabled->boolean();
+  if (std::optional<Field> plots = find("plots")) a.plots = plots->boolean();
   if (std::optional<Field> stretch = find("link_stretch")) {
     a.link_stretch = stretch->quantity(units::dimensionless);
     if (!(a.link_stretch > 1.0)) stretch->fail("must exceed 1 (a link breaks when stretched beyond this factor)");

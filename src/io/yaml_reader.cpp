@@ -166,6 +166,13 @@ long Field::integer(long min, long max) const {
   return static_cast<long>(value);
 }
 
+bool Field::boolean() const {
+  const std::string value = text("true or false");
+  if (value == "true" || value == "yes" || value == "on") return true;
+  if (value == "false" || value == "no" || value == "off") return false;
+  fail("must be true or false");
+}
+
 std::string Field::text(std::string_view what, bool allow_empty) const {
   std::string value = scalar(what);
   if (value.empty() && !allow_empty) fail("must not be empty");

@@ -72,6 +72,8 @@ class Field {
   Vec3 vector(units::Dimension dimension) const;
   // A whole number within `min`..`max`.
   long integer(long min, long max) const;
+  // true/yes/on or false/no/off.
+  bool boolean() const;
   // A scalar (a name, a path, a title), described in messages as `what`; not empty unless allowed.
   std::string text(std::string_view what = "a name", bool allow_empty = false) const;
   // A list; each entry a Field with path "<path>[i]".

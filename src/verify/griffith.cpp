@@ -51,6 +51,7 @@ GriffithResult runGriffith(const GriffithCase& g) {
   otm::Settings settings;
   settings.end_time = 2.0 * t_fail;
   settings.erosion_radius = g.erosion_radius;
+  settings.crack_visibility = g.crack_visibility;
   otm::Integrator integrator(model, settings);
   integrator.initialise();
   const LocalIndex initial_eroded = static_cast<LocalIndex>(

@@ -54,6 +54,7 @@ struct GriffithCase {
   int cells_per_half_crack = 4;  // resolution a/h
   int thickness_cells = 2;       // points through the thickness
   double erosion_radius = 2.0;   // eps / h (otm::Settings::erosion_radius)
+  bool crack_visibility = true;  // otm::Settings::crack_visibility
 };
 GriffithResult runGriffith(const GriffithCase& c);
 Outcome griffith();

@@ -53,12 +53,29 @@ void Neighbourhoods::collectOccluders(const Vec3& xp, int body, double radius, S
 }
 
 bool Neighbourhoods::hidden(const Vec3& xp, const Vec3& xa, double spacing, const Scratch& s) const {
-  constexpr int samples = 6;
+  const Vec3 d = xa - xp;
+  const double length2 = d.squaredNorm();
+  // A sample in eroded material lies within about half a spacing of an eroded point.
+  const double spacing2 = 0.5625 * spacing * spacing;
+  // Most segments pass no eroded point that near: nothing to sample.
+  bool near = false;
+  for (const Vec3& e : s.occluders) {
+    const Vec3 f = e - xp;
+    const double t = length2 > 0.0 ? std::clamp(f.dot(d) / length2, 0.0, 1.0) : 0.0;
+    if ((f - t * d).squaredNorm() < spacing2) {
+      near = true;
+      break;
+    }
+  }
+  if (!near) return false;
+  // Samples at a quarter, half and three quarters: a band one point thick takes more than a quarter of
+  // any segment across it within the cut-off radius (2.3 h).
+  constexpr int samples = 4;
   for (int k = 1; k < samples; ++k) {
-    const Vec3 y = xp + (static_cast<double>(k) / samples) * (xa - xp);
-    double eroded2 = spacing * spacing;  // only eroded points this near count
+    const Vec3 y = xp + (static_cast<double>(k) / samples) * d;
+    double eroded2 = spacing2;
     for (const Vec3& e : s.occluders) eroded2 = std::min(eroded2, (e - y).squaredNorm());
-    if (eroded2 >= spacing * spacing) continue;
+    if (eroded2 >= spacing2) continue;
     bool intact_nearer = false;
     intact_cells_.forEachWithin(y, std::sqrt(eroded2), [&](LocalIndex, double) { intact_nearer = true; });
     if (!intact_nearer) return true;
@@ -83,13 +100,17 @@ int Neighbourhoods::gather(const Model& model, LocalIndex p, double scale, bool 
     s.node.clear();
     for (const auto& [a, d2] : s.candidates)
       if (nodes.body[a] == own || s.nearest_foreign[nodes.body[a]] <= contact2) s.node.push_back(a);
+    s.visible = s.node.size();
     if (visibility) {
       collectOccluders(points.x[p], own, radius, s);
-      if (!s.occluders.empty())
-        std::erase_if(s.node,
-                      [&](LocalIndex a) { return nodes.body[a] == own && hidden(points.x[p], nodes.x[a], h, s); });
+      if (!s.occluders.empty()) {
+        const auto hidden_begin = std::stable_partition(s.node.begin(), s.node.end(), [&](LocalIndex a) {
+          return nodes.body[a] != own || !hidden(points.x[p], nodes.x[a], h, s);
+        });
+        s.visible = static_cast<std::size_t>(hidden_begin - s.node.begin());
+      }
     }
-    if (static_cast<int>(s.node.size()) >= settings_.min_neighbours || attempt == 12) break;
+    if (static_cast<int>(s.visible) >= settings_.min_neighbours || attempt == 12) break;
     radius *= 1.25;
   }
   return static_cast<int>(s.node.size());
@@ -106,7 +127,8 @@ lme::Result Neighbourhoods::shapeFunctionsAt(Model& model, LocalIndex p, std::sp
 
 // A point near a strongly compressed or re-entrant surface can fall outside the hull of the nodes
 // within its cut-off: it is retried from lambda = 0 with radii 1.5, 2.25 and 3.375 times larger,
-// then with its plain radius and no visibility test, before the run stops. Rare, so the connectivity is then rebuilt with the retried rows.
+// before the run stops (without the visibility test). Rare, so the connectivity is then rebuilt
+// with the retried rows.
 void Neighbourhoods::retryFailedPoints(Model& model) {
   PointStore& points = model.points;
   Connectivity& conn = model.connectivity;
@@ -127,9 +149,8 @@ void Neighbourhoods::retryFailedPoints(Model& model) {
     const LocalIndex p = retry[k];
     lme::Result r;
     int n = 0;
-    // The last attempt ignores visibility: a point boxed in by eroded points keeps its nodes.
-    for (int attempt = 1; attempt < 5; ++attempt) {
-      n = gather(model, p, attempt < 4 ? std::pow(1.5, attempt) : 1.0, attempt < 4, s);
+    for (int attempt = 1; attempt < 4; ++attempt) {
+      n = gather(model, p, std::pow(1.5, attempt), false, s);
       const auto size = static_cast<std::size_t>(n);
       s.N.resize(start[k] + size);
       s.dN.resize(start[k] + size);
@@ -203,14 +224,19 @@ void Neighbourhoods::update(Model& model) {
   }
   const double cell_size = intact > 0 ? radius_sum / intact : 1.0;
   cells_.build(nodes.x, nodes.size(), std::max(cell_size, 1e-300));
-  buildOccluders(model, cell_size);
+  if (settings_.crack_visibility) buildOccluders(model, cell_size);
 
   const int threads = omp_get_max_threads();
   scratch_.resize(static_cast<std::size_t>(threads));
   count_.assign(static_cast<std::size_t>(np), 0);
+  visible_.resize(static_cast<std::size_t>(np));
   conn.offset.assign(static_cast<std::size_t>(np) + 1, 0);
   const std::size_t bodies = model.bodies.size();
   double shape_time = 0.0;
+  constexpr LocalIndex chunk = 256;
+  const LocalIndex chunks = (np + chunk - 1) / chunk;
+  chunk_thread_.resize(static_cast<std::size_t>(chunks));
+  chunk_start_.resize(static_cast<std::size_t>(chunks));
 
   // Two passes, so that the shape functions are written straight into the connectivity (a copy
   // per thread would double the largest arrays of a run): the search first, keeping only the
@@ -218,19 +244,25 @@ void Neighbourhoods::update(Model& model) {
 #pragma omp parallel num_threads(threads)
   {
     const int t = omp_get_thread_num();
-    const int nt = omp_get_num_threads();
     Scratch& s = scratch_[static_cast<std::size_t>(t)];
     s.nearest_foreign.resize(bodies);
     s.retry.clear();
-    // A static contiguous chunk per thread keeps each thread's node lists in point order.
-    const LocalIndex begin = static_cast<LocalIndex>(static_cast<Index>(np) * t / nt);
-    const LocalIndex end = static_cast<LocalIndex>(static_cast<Index>(np) * (t + 1) / nt);
+    // Chunks of points, dynamically scheduled (points near cracks cost more: the visibility
+    // test); a chunk's node lists go to the searching thread's rows, in point order, and the
+    // chunk remembers which thread and where.
     s.rows.clear();
-    for (LocalIndex p = begin; p < end; ++p) {
-      // Eroded points are debris flying ballistically: no neighbourhood, no shape functions.
-      if (points.eroded[p]) continue;
-      count_[p] = gather(model, p, 1.0, true, s);
-      s.rows.insert(s.rows.end(), s.node.begin(), s.node.end());
+#pragma omp for schedule(dynamic, 1)
+    for (LocalIndex c = 0; c < chunks; ++c) {
+      chunk_thread_[c] = t;
+      chunk_start_[c] = s.rows.size();
+      const LocalIndex end = std::min<LocalIndex>(np, (c + 1) * chunk);
+      for (LocalIndex p = c * chunk; p < end; ++p) {
+        // Eroded points are debris flying ballistically: no neighbourhood, no shape functions.
+        if (points.eroded[p]) continue;
+        count_[p] = gather(model, p, 1.0, settings_.crack_visibility, s);
+        visible_[p] = static_cast<int>(s.visible);
+        s.rows.insert(s.rows.end(), s.node.begin(), s.node.end());
+      }
     }
 #pragma omp barrier
 #pragma omp single
@@ -243,22 +275,31 @@ void Neighbourhoods::update(Model& model) {
     }
     // Each point's row and shape functions depend on nothing but the point, so any schedule gives
     // the same result: dynamic, since the cost varies (eroded points cost nothing, contact rows
-    // are longer). The row comes from the node list of the thread that searched the point.
+    // are longer). The row comes from the node lists of the thread that searched the point's chunk.
     Stopwatch shape_watch;
 #pragma omp for schedule(dynamic, 256) nowait
     for (LocalIndex p = 0; p < np; ++p) {
       if (points.eroded[p]) continue;
-      int o = static_cast<int>(static_cast<Index>(p) * nt / np);  // the searching thread, within one
-      while (static_cast<Index>(np) * o / nt > p) --o;
-      while (static_cast<Index>(np) * (o + 1) / nt <= p) ++o;
-      const auto owner_begin = static_cast<LocalIndex>(static_cast<Index>(np) * o / nt);
+      const LocalIndex c = p / chunk;
       const Index first = conn.offset[p];
       const auto n = static_cast<std::size_t>(count_[p]);
-      const LocalIndex* row = scratch_[static_cast<std::size_t>(o)].rows.data() + (first - conn.offset[owner_begin]);
+      const LocalIndex* row = scratch_[static_cast<std::size_t>(chunk_thread_[c])].rows.data() + chunk_start_[c] +
+                              (first - conn.offset[c * chunk]);
       std::copy_n(row, n, conn.node.begin() + first);
-      const lme::Result r =
-          shapeFunctionsAt(model, p, std::span<const LocalIndex>(row, n), std::span<double>(conn.N.data() + first, n),
-                           std::span<Vec3>(conn.dN.data() + first, n), s);
+      // Over the visible nodes; the hidden ones, at the end of the row, get zero weight. A point
+      // that lies outside the hull of its visible nodes (boxed in by eroded points rather than
+      // facing a crack) takes them all.
+      const auto visible = static_cast<std::size_t>(visible_[p]);
+      std::fill(conn.N.begin() + first + visible, conn.N.begin() + first + n, 0.0);
+      std::fill(conn.dN.begin() + first + visible, conn.dN.begin() + first + n, Vec3::Zero());
+      lme::Result r = shapeFunctionsAt(model, p, std::span<const LocalIndex>(row, visible),
+                                       std::span<double>(conn.N.data() + first, visible),
+                                       std::span<Vec3>(conn.dN.data() + first, visible), s);
+      if (r.status != lme::Status::converged && visible < n) {
+        model.points.lambda[p].setZero();
+        r = shapeFunctionsAt(model, p, std::span<const LocalIndex>(row, n), std::span<double>(conn.N.data() + first, n),
+                             std::span<Vec3>(conn.dN.data() + first, n), s);
+      }
       if (r.status != lme::Status::converged) s.retry.push_back(p);
     }
     const double my_shape_time = shape_watch.seconds();

@@ -27,7 +27,8 @@ class Neighbourhoods {
 
  private:
   struct Scratch {
-    std::vector<LocalIndex> node;   // neighbours of the point being processed
+    std::vector<LocalIndex> node;   // neighbours of the point being processed: visible first
+    std::size_t visible = 0;        // how many of them are visible
     std::vector<LocalIndex> rows;   // neighbours of all points of this thread, in order
     std::vector<LocalIndex> retry;  // points of this thread whose shape functions failed
     std::vector<double> N;          // shape functions of retried points
@@ -39,8 +40,8 @@ class Neighbourhoods {
   };
 
   // Collects the neighbour nodes of point p within `scale` times its cut-off radius into
-  // s.node; returns their count. With `visibility`, nodes hidden behind eroded points are left
-  // out (see hidden()).
+  // s.node; returns their count. With `visibility`, nodes hidden behind eroded points (see
+  // hidden()) go to the end of the list, after the s.visible visible ones.
   int gather(const Model& model, LocalIndex p, double scale, bool visibility, Scratch& s) const;
   // Visibility across cracks: node position xa is hidden from point p when the segment between
   // them crosses eroded material, i.e. a sample on it lies nearer an eroded point (of
@@ -64,6 +65,9 @@ class Neighbourhoods {
   std::vector<int> eroded_body_;
   std::vector<Scratch> scratch_;  // one per thread
   std::vector<int> count_;
+  std::vector<int> visible_;  // per point: the first visible_ nodes of its row are visible
+  std::vector<int> chunk_thread_;           // per chunk of points: the thread that searched it
+  std::vector<std::size_t> chunk_start_;    // and where its node lists start in that thread's rows
   std::vector<Index> transpose_scratch_;
   double search_seconds_ = 0.0, shape_seconds_ = 0.0;
 };

@@ -31,6 +31,12 @@ struct Settings {
   // only when that body's nearest node lies within contact_distance * h of the point. A point
   // sits about h/4 inside its own surface, so 1.0 couples across a gap of roughly h/2.
   double contact_distance = 1.0;
+  // Visibility across cracks (docs/theory.md §8): a point does not take nodes of its own body that
+  // lie behind eroded material, so crack faces separate. Needed for brittle crack growth
+  // (`griffith` converges with it, diverges without); off by default because with the scattered
+  // erosion of a shocked impact target it leaves points one-sided neighbourhoods and the run
+  // becomes unstable (measured on examples/sphere-plate.yaml).
+  bool crack_visibility = false;
   std::vector<RigidWall> walls;
   // Eigenerosion (DESIGN.md §2 step 8): radius of the ball B_eps as a multiple of the point
   // spacing h.

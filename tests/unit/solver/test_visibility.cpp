@@ -29,7 +29,8 @@ Model plate() {
   return model;
 }
 
-// Connections from intact points beyond the band y in (0, h) to nodes on the far side of it.
+// Connections (with weight: hidden nodes stay in a row with N = 0 and grad N = 0) from intact
+// points beyond the band y in (0, h) to nodes on the far side of it.
 long connectionsAcross(const Model& model) {
   const PointStore& points = model.points;
   const Connectivity& conn = model.connectivity;
@@ -37,6 +38,7 @@ long connectionsAcross(const Model& model) {
   for (LocalIndex p = 0; p < points.owned; ++p) {
     if (points.eroded[p]) continue;
     for (Index k = conn.offset[p]; k < conn.offset[p + 1]; ++k) {
+      if (conn.N[k] == 0.0 && conn.dN[k].isZero(0.0)) continue;
       const double y = model.nodes.x[conn.node[k]][1];
       across += (points.x[p][1] > h && y < 0.5 * h) || (points.x[p][1] < 0.0 && y > 0.5 * h);
     }
@@ -45,7 +47,8 @@ long connectionsAcross(const Model& model) {
 }
 
 TEST(Visibility, AnErodedBandCutsTheNeighbourhoods) {
-  const Settings settings;
+  Settings settings;
+  settings.crack_visibility = true;
   Model intact = plate();
   Neighbourhoods(settings).update(intact);
   EXPECT_GT(connectionsAcross(intact), 1000);
@@ -55,6 +58,9 @@ TEST(Visibility, AnErodedBandCutsTheNeighbourhoods) {
     if (cracked.points.x[p][1] > 0.0 && cracked.points.x[p][1] < h) cracked.points.eroded[p] = 1;
   Neighbourhoods(settings).update(cracked);
   EXPECT_EQ(connectionsAcross(cracked), 0);
+  Model off = cracked;
+  Neighbourhoods(Settings{}).update(off);  // crack_visibility is off by default
+  EXPECT_GT(connectionsAcross(off), 100);
   const Connectivity& conn = cracked.connectivity;
   for (LocalIndex p = 0; p < cracked.points.owned; ++p) {
     if (cracked.points.eroded[p]) continue;
