@@ -61,10 +61,9 @@ TaylorBarResult runTaylorBar(double mesh_size, double cfl) {
   const PointStore& points = model.points;
   double limit = std::numeric_limits<double>::infinity();
   for (LocalIndex q = 0; q < points.owned; ++q) {
-    const double stretch = otm::smallestStretch(points.F[q]);
-    if (points.eroded[q] || points.spacing0[q] * stretch / points.sound_speed[q] >= limit) continue;
-    limit = points.spacing0[q] * stretch / points.sound_speed[q];
-    r.min_stretch = stretch;
+    if (points.eroded[q] || otm::stepLength(points, q) / points.sound_speed[q] >= limit) continue;
+    limit = otm::stepLength(points, q) / points.sound_speed[q];
+    r.min_stretch = otm::smallestStretch(points.F[q]);
     r.limiting_r = std::hypot(points.x[q][0], points.x[q][1]);
     r.limiting_z = points.x[q][2];
     r.limiting_h0 = points.spacing0[q];

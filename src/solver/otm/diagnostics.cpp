@@ -1,12 +1,14 @@
 #include "solver/otm/diagnostics.hpp"
 
 #include "core/error.hpp"
+#include "solver/otm/integrator.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace kessler::otm {
 namespace {
@@ -100,21 +102,21 @@ void Diagnostics::checkPoints(const Model& model, const StepInfo& at) {
 void Diagnostics::checkTimeStep(const Model& model, const StepInfo& at) const {
   const double floor = settings_.min_dt_fraction * at.dt_initial;
   if (settings_.min_dt_fraction <= 0.0 || at.dt_next >= floor || model.points.owned == 0) return;
-  // Name the point that sets the step: the smallest h / c, lowest index on a tie.
+  // Name the point that sets the step (Integrator::stableStep): the smallest l / c with l = h0
+  // times the smallest principal stretch, lowest index on a tie.
   const PointStore& s = model.points;
-  double smallest = std::numeric_limits<double>::infinity();
-#pragma omp parallel for schedule(static) reduction(min : smallest)
+  std::vector<double> ratio(s.owned, std::numeric_limits<double>::infinity());
+#pragma omp parallel for schedule(static)
   for (LocalIndex p = 0; p < s.owned; ++p)
-    if (!s.eroded[p]) smallest = std::min(smallest, s.spacing(p) / s.sound_speed[p]);
-  LocalIndex limiting = 0;
-  while (limiting + 1 < s.owned && (s.eroded[limiting] || s.spacing(limiting) / s.sound_speed[limiting] > smallest))
-    ++limiting;
+    if (!s.eroded[p]) ratio[p] = stepLength(s, p) / s.sound_speed[p];
+  const auto limiting = static_cast<LocalIndex>(std::min_element(ratio.begin(), ratio.end()) - ratio.begin());
   throw NumericalError(describePoint(
       model, at, limiting,
       fmt::format("time step collapsed: dt = {:.6g} s is below min_dt_fraction {:.6g} of the initial {:.6g} s "
-                  "(this point sets it: spacing h = {:.6g} m, sound speed c = {:.6g} m/s, volume V/V0 = {:.6g})",
-                  at.dt_next, settings_.min_dt_fraction, at.dt_initial, s.spacing(limiting), s.sound_speed[limiting],
-                  s.volume[limiting] / s.volume0[limiting])));
+                  "(this point sets it: length h0 lambda_min = {:.6g} m with smallest principal stretch "
+                  "lambda_min = {:.6g}, sound speed c = {:.6g} m/s, volume V/V0 = {:.6g})",
+                  at.dt_next, settings_.min_dt_fraction, at.dt_initial, stepLength(s, limiting),
+                  smallestStretch(s.F[limiting]), s.sound_speed[limiting], s.volume[limiting] / s.volume0[limiting])));
 }
 
 void Diagnostics::checkEnergy(const Model& model, const StepInfo& at, double reference_energy) const {

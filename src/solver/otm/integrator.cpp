@@ -169,6 +169,10 @@ double smallestStretch(const Mat3& F) {
   return std::sqrt(std::max(eigen.eigenvalues()[0], 0.0));
 }
 
+double stepLength(const PointStore& points, LocalIndex p) {
+  return points.spacing0[p] * smallestStretch(points.F[p]);
+}
+
 // CFL condition over material points: dt = cfl * min_p l_p / c_p (DESIGN.md §2 step 9). The
 // length l_p is the reference spacing times the smallest principal stretch of F: plastic flow
 // keeps the volume (so h0 J^(1/3) would not shrink) while it can flatten the material, and the
@@ -179,7 +183,7 @@ double Integrator::stableStep() const {
 #pragma omp parallel for schedule(static) reduction(min : dt)
   for (LocalIndex p = 0; p < points.owned; ++p) {
     if (points.eroded[p]) continue;
-    dt = std::min(dt, points.spacing0[p] * smallestStretch(points.F[p]) / points.sound_speed[p]);
+    dt = std::min(dt, stepLength(points, p) / points.sound_speed[p]);
   }
   KESSLER_VERIFY(std::isfinite(dt) && dt > 0.0, "no stable time step: every point is eroded or the model is empty");
   return settings_.cfl * dt;

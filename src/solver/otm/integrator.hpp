@@ -15,6 +15,9 @@ namespace kessler::otm {
 // The smallest principal stretch of F (the square root of the smallest eigenvalue of F^T F): the
 // time step's length scale is the reference spacing times it.
 double smallestStretch(const Mat3& F);
+// That length of point p: h0 times the smallest principal stretch. The stable step is cfl times
+// the smallest stepLength / c over the intact points.
+double stepLength(const PointStore& points, LocalIndex p);
 
 struct Energies {
   double kinetic = 0.0;   // 1/2 sum m_p |v_p|^2

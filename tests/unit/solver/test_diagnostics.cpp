@@ -136,6 +136,22 @@ TEST_F(DiagnosticsTest, NamesThePointThatCollapsesTheTimeStep) {
   EXPECT_NO_THROW(Diagnostics(off).check(model_, collapsed, reference_));
 }
 
+TEST_F(DiagnosticsTest, NamesTheFlattenedPointThatSetsTheStep) {
+  // Isochoric flattening: the volume (and so the spacing) is unchanged, the smallest stretch is
+  // 0.01, and that is what sets the step (Integrator::stableStep).
+  model_.points.F[7] = Vec3(10.0, 10.0, 0.01).asDiagonal();
+  StepInfo collapsed = at();
+  collapsed.dt_next = 1e-4 * collapsed.dt_initial;
+  try {
+    Diagnostics(settings_).check(model_, collapsed, reference_);
+    FAIL() << "no error";
+  } catch (const NumericalError& e) {
+    const std::string m = e.what();
+    EXPECT_EQ(m.rfind(pointPrefix(7), 0), 0u) << m;
+    EXPECT_NE(m.find("smallest principal stretch lambda_min = 0.01,"), std::string::npos) << m;
+  }
+}
+
 TEST_F(DiagnosticsTest, NamesThePointWhereEnergyAppearsFromNowhere) {
   model_.points.v[3] *= 3.0;  // about 9x the kinetic energy of one point: well over 10% overall
   const std::string m = failure();
