@@ -199,6 +199,7 @@ std::string resolvedDeckText(const RunConfig& config) {
   out << YAML::Key << "max_steps" << YAML::Value << s.max_steps << YAML::Comment("0: no limit");
   scalar(out, "contact_distance", s.contact_distance, "times the point spacing");
   out << YAML::Key << "crack_visibility" << YAML::Value << (s.crack_visibility ? "true" : "false");
+  out << YAML::Key << "volume_averaging" << YAML::Value << (s.volume_averaging ? "true" : "false");
   scalar(out, "min_dt_fraction", s.min_dt_fraction, "of the initial time step; 0: no check");
   scalar(out, "max_energy_growth", s.max_energy_growth, "relative to the initial total energy");
   out << YAML::EndMap;

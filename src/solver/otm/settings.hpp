@@ -31,6 +31,10 @@ struct Settings {
   // only when that body's nearest node lies within contact_distance * h of the point. A point
   // sits about h/4 inside its own surface, so 1.0 couples across a gap of roughly h/2.
   double contact_distance = 1.0;
+  // Volume averaging (F-bar over the nodal patch, Integrator::averageVolumeChange): the step's
+  // volume change of each point is replaced by its nodal-patch average. Without it, strong shocks
+  // overcompress scattered points (docs/theory.md §8).
+  bool volume_averaging = true;
   // Visibility across cracks (docs/theory.md §8): a point does not take nodes of its own body that
   // lie behind eroded material, so crack faces separate. Needed for brittle crack growth
   // (`griffith` converges with it, diverges without); off by default because with the scattered
