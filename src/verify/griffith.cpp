@@ -18,25 +18,26 @@
 namespace kessler::verify {
 
 GriffithResult runGriffith(const GriffithCase& g) {
-  const double a = 2e-3;                         // crack half-length
+  const double a = 2e-3;                        // crack half-length
   const double h = a / g.cells_per_half_crack;  // cell size
   const double half_width = 3 * a, half_height = 3 * a, thickness = g.thickness_cells * h;
   const double E = 70e9, nu = 0.33, gc = 100.0;
   auto material = std::make_shared<NeoHookean>(
-      "brittle elastic", NeoHookeanParameters{.density = 2700.0, .youngs_modulus = E, .poisson_ratio = nu,
-                                              .fracture_energy = gc});
-  const int nx = static_cast<int>(std::lround(2 * half_width / h)), ny = static_cast<int>(std::lround(2 * half_height / h));
+      "brittle elastic",
+      NeoHookeanParameters{.density = 2700.0, .youngs_modulus = E, .poisson_ratio = nu, .fracture_energy = gc});
+  const int nx = static_cast<int>(std::lround(2 * half_width / h)),
+            ny = static_cast<int>(std::lround(2 * half_height / h));
   otm::Model model;
-  addBoxBody(model, "plate", {Vec3(-half_width, -half_height, 0), Vec3(half_width, half_height, thickness)}, {nx, ny, g.thickness_cells},
-             Vec3::Zero(), material);
+  addBoxBody(model, "plate", {Vec3(-half_width, -half_height, 0), Vec3(half_width, half_height, thickness)},
+             {nx, ny, g.thickness_cells}, Vec3::Zero(), material);
   // The initial crack: the row of points just above y = 0 over |x| < a.
   std::vector<std::uint8_t> initial(model.points.owned, 0);
   for (LocalIndex p = 0; p < model.points.owned; ++p) {
     const Vec3& x = model.points.x[p];
     if (x[1] > 0 && x[1] < h && std::abs(x[0]) < a) initial[p] = model.points.eroded[p] = 1;
   }
-  const double sigma_ref = std::sqrt(E * gc / (std::numbers::pi * a)) /
-                           std::sqrt(1.0 / std::cos(std::numbers::pi * a / (2 * half_width)));
+  const double sigma_ref =
+      std::sqrt(E * gc / (std::numbers::pi * a)) / std::sqrt(1.0 / std::cos(std::numbers::pi * a / (2 * half_width)));
   // Load: edge speed ramped linearly so that the Griffith stress is reached after about five
   // transits of the longitudinal wave across the plate (quasi-static), then held rising.
   const double c = std::sqrt(E / 2700.0);
@@ -54,8 +55,8 @@ GriffithResult runGriffith(const GriffithCase& g) {
   settings.crack_visibility = g.crack_visibility;
   otm::Integrator integrator(model, settings);
   integrator.initialise();
-  const LocalIndex initial_eroded = static_cast<LocalIndex>(
-      std::count(model.points.eroded.begin(), model.points.eroded.end(), std::uint8_t{1}));
+  const LocalIndex initial_eroded =
+      static_cast<LocalIndex>(std::count(model.points.eroded.begin(), model.points.eroded.end(), std::uint8_t{1}));
   GriffithResult r;
   r.reference = sigma_ref;
   r.fail_time_reference = t_fail;
@@ -67,8 +68,8 @@ GriffithResult runGriffith(const GriffithCase& g) {
       model.nodes.prescribed_v[n][1] = model.nodes.x[n][1] > 0 ? v : -v;
     }
     integrator.step();
-    const LocalIndex eroded = static_cast<LocalIndex>(
-        std::count(model.points.eroded.begin(), model.points.eroded.end(), std::uint8_t{1}));
+    const LocalIndex eroded =
+        static_cast<LocalIndex>(std::count(model.points.eroded.begin(), model.points.eroded.end(), std::uint8_t{1}));
     if (eroded > initial_eroded) {  // the crack grew: the remote stress now
       double mass = 0.0, sum = 0.0;
       for (LocalIndex p = 0; p < model.points.owned; ++p) {

@@ -47,7 +47,7 @@ struct GriffithResult {
   double reference = 0.0;
   long steps = 0, points = 0;
   double failure_time = 0.0, fail_time_reference = 0.0;  // s: when it failed; when sigma_ref is reached
-  Vec3 first_eroded = Vec3::Zero();                       // m: where the crack first grew
+  Vec3 first_eroded = Vec3::Zero();                      // m: where the crack first grew
 };
 
 struct GriffithCase {

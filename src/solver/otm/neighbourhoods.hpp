@@ -65,9 +65,9 @@ class Neighbourhoods {
   std::vector<int> eroded_body_;
   std::vector<Scratch> scratch_;  // one per thread
   std::vector<int> count_;
-  std::vector<int> visible_;  // per point: the first visible_ nodes of its row are visible
-  std::vector<int> chunk_thread_;           // per chunk of points: the thread that searched it
-  std::vector<std::size_t> chunk_start_;    // and where its node lists start in that thread's rows
+  std::vector<int> visible_;              // per point: the first visible_ nodes of its row are visible
+  std::vector<int> chunk_thread_;         // per chunk of points: the thread that searched it
+  std::vector<std::size_t> chunk_start_;  // and where its node lists start in that thread's rows
   std::vector<Index> transpose_scratch_;
   double search_seconds_ = 0.0, shape_seconds_ = 0.0;
 };
