@@ -122,6 +122,7 @@ void Integrator::updatePoints() {
   PointStore& points = model_.points;
   const Connectivity& conn = model_.connectivity;
   LocalIndex bad = points.owned;
+  j_point_.resize(static_cast<std::size_t>(points.owned));  // det(dF) of each intact point
 #pragma omp parallel for schedule(static) reduction(min : bad)
   for (LocalIndex p = 0; p < points.owned; ++p) {
     if (points.eroded[p]) {
@@ -140,6 +141,7 @@ void Integrator::updatePoints() {
     }
     const double J = dF.determinant();
     if (!(J > 0.0) || !std::isfinite(J)) bad = std::min(bad, p);
+    j_point_[p] = J;
     points.x[p] += dx;
     points.v[p] += dv;
     points.dF[p] = dF;
@@ -152,7 +154,7 @@ void Integrator::updatePoints() {
   for (LocalIndex p = 0; p < points.owned; ++p) {
     if (points.eroded[p]) continue;
     points.F[p] = points.dF[p] * points.F[p];
-    points.volume[p] *= points.dF[p].determinant();
+    points.volume[p] *= j_point_[p];
   }
 }
 
@@ -165,10 +167,7 @@ void Integrator::updatePoints() {
 void Integrator::averageVolumeChange() {
   PointStore& points = model_.points;
   const Connectivity& conn = model_.connectivity;
-  j_point_.resize(static_cast<std::size_t>(points.owned));
   j_node_.resize(static_cast<std::size_t>(model_.nodes.size()));
-#pragma omp parallel for schedule(static)
-  for (LocalIndex p = 0; p < points.owned; ++p) j_point_[p] = points.eroded[p] ? 0.0 : points.dF[p].determinant();
 #pragma omp parallel for schedule(static)
   for (LocalIndex a = 0; a < model_.nodes.owned; ++a) {
     double m = 0.0, mj = 0.0;
@@ -190,7 +189,10 @@ void Integrator::averageVolumeChange() {
       weight += conn.N[e];
       average += conn.N[e] * j_node_[conn.node[e]];
     }
-    if (weight > 0.0 && average > 0.0) points.dF[p] *= std::cbrt(average / weight / j_point_[p]);
+    if (weight > 0.0 && average > 0.0) {
+      points.dF[p] *= std::cbrt(average / weight / j_point_[p]);
+      j_point_[p] = points.dF[p].determinant();
+    }
   }
 }
 

@@ -76,7 +76,7 @@ class Integrator {
   Eigenerosion erosion_;
   std::vector<Vec3> dv_;  // nodal velocity increment of the step (FLIP-style transfer to points)
   std::vector<Vec3> du_;  // nodal displacement of the step
-  std::vector<double> j_point_, j_node_;  // averageVolumeChange: det(dF) per point, per node
+  std::vector<double> j_point_, j_node_;  // det(dF) per point (after averaging), averaged per node
   std::vector<PointLoad> loads_;  // assembly scratch, one record per point
   double dt_step_ = 0.0;  // length of the step in progress
   PhaseTimers timers_;
