@@ -16,14 +16,14 @@ namespace kessler::io {
 namespace {
 
 // Bumped whenever the layout changes; an older or newer checkpoint is refused with a message.
-constexpr std::int64_t format_version = 3;
+constexpr std::int64_t format_version = 4;
 
 // Vec3 and Mat3 are stored as runs of 3 and 9 doubles, straight from the store.
 static_assert(sizeof(Vec3) == 3 * sizeof(double));
 static_assert(sizeof(Mat3) == 9 * sizeof(double));
 // Tripwires: a field added to a store must be added to pointFields/nodeFields below (and the
 // count here), or restarts would silently lose it.
-constexpr std::size_t point_field_count = 22, node_field_count = 9;
+constexpr std::size_t point_field_count = 24, node_field_count = 9;
 static_assert(sizeof(PointStore) == point_field_count * sizeof(std::vector<double>) + sizeof(std::int64_t),
               "PointStore gained or lost a field: add it to pointFields() in io/checkpoint.cpp");
 static_assert(sizeof(NodeStore) == node_field_count * sizeof(std::vector<double>) + sizeof(std::int64_t),
@@ -54,6 +54,8 @@ void pointFields(Store& s, Visit&& visit) {
   visit("viscous_pressure", s.viscous_pressure);
   visit("be", s.be);
   visit("eroded", s.eroded);
+  visit("passes_through", s.passes_through);
+  visit("carrier", s.carrier);
   visit("lambda", s.lambda);
 }
 

@@ -63,7 +63,8 @@ std::string checkpointMetaText(const otm::Model& model, const RunLoopState& loop
                       {"point_begin", b.point_begin},
                       {"point_end", b.point_end},
                       {"node_begin", b.node_begin},
-                      {"node_end", b.node_end}});
+                      {"node_end", b.node_end},
+                      {"touched", b.touched}});
   json materials = json::array();
   for (const MaterialPtr& m : model.materials) materials.push_back(m->name());
   const json meta = {{"bodies", bodies},
@@ -89,7 +90,8 @@ void readCheckpointMeta(const std::string& text, const std::filesystem::path& fi
     for (const json& b : meta.at("bodies")) {
       BodyInfo body{b.at("name").get<std::string>(),       b.at("material").get<int>(),
                     b.at("point_begin").get<LocalIndex>(), b.at("point_end").get<LocalIndex>(),
-                    b.at("node_begin").get<LocalIndex>(),  b.at("node_end").get<LocalIndex>()};
+                    b.at("node_begin").get<LocalIndex>(),  b.at("node_end").get<LocalIndex>(),
+                    b.at("touched").get<std::uint64_t>()};
       if (body.material < 0 || static_cast<std::size_t>(body.material) >= model.materials.size())
         throw Error(fmt::format("checkpoint '{}': body '{}' names no stored material", file.string(), body.name));
       model.bodies.push_back(std::move(body));

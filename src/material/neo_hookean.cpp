@@ -39,6 +39,12 @@ void NeoHookean::update(PointStore& points, LocalIndex begin, LocalIndex end, do
   const double rho0 = p_.density;
 #pragma omp parallel for schedule(static)
   for (LocalIndex p = begin; p < end; ++p) {
+    if (points.eroded[p]) {
+      // Debris: no stress; its internal energy (the strain energy it had, and any heat of
+      // erosion and capture) stays.
+      points.stress[p].setZero();
+      continue;
+    }
     const Mat3& F = points.F[p];
     const double J = F.determinant();
     points.stress[p] = stress(F);

@@ -36,7 +36,8 @@ void NodeStore::permute(const std::vector<LocalIndex>& order) {
 
 void PointStore::permute(const std::vector<LocalIndex>& order) {
   permuteAll(order, x.size(), id, body, x, v, mass, volume, volume0, spacing0, F, dF, stress, energy, sound_speed,
-             plastic_strain, temperature, damage, strain_energy, ductile_work, viscous_pressure, be, eroded, lambda);
+             plastic_strain, temperature, damage, strain_energy, ductile_work, viscous_pressure, be, eroded,
+             passes_through, carrier, lambda);
 }
 
 void NodeStore::resize(std::size_t n) {
@@ -74,6 +75,8 @@ void PointStore::resize(std::size_t n) {
   viscous_pressure.resize(n, 0.0);
   be.resize(n, Mat3::Identity());
   eroded.resize(n, 0);
+  passes_through.resize(n, 0);
+  carrier.resize(n, -1);
   lambda.resize(n, Vec3::Zero());
   owned = static_cast<LocalIndex>(n);
 }

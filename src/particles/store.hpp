@@ -52,6 +52,11 @@ struct PointStore {
   std::vector<double> viscous_pressure; // artificial bulk viscosity q, Pa (part of stress)
   std::vector<Mat3> be;                 // elastic left Cauchy-Green tensor (plasticity)
   std::vector<std::uint8_t> eroded;     // 1: failed, carries no stress
+  // Debris capture (solver/otm/debris.hpp), for eroded points: bit b set if body b cannot catch
+  // the point (its own body and the bodies that body touched when it eroded; 0 before erosion),
+  // and the body whose nodes carry it now (-1: ballistic).
+  std::vector<std::int64_t> passes_through;
+  std::vector<std::int32_t> carrier;
   std::vector<Vec3> lambda;     // LME Lagrange multiplier, warm start for the next solve
   LocalIndex owned = 0;
 
@@ -70,6 +75,9 @@ struct BodyInfo {
   int material = 0;
   LocalIndex point_begin = 0, point_end = 0;
   LocalIndex node_begin = 0, node_end = 0;
+  // Bodies it has been in contact with so far, its own included (bit b: body b; the first 64
+  // bodies): what its debris passes through (solver/otm/debris.hpp).
+  std::uint64_t touched = 0;
 };
 
 }  // namespace kessler

@@ -86,17 +86,24 @@ LocalIndex Eigenerosion::apply(Model& model) {
 void Eigenerosion::releaseDebris(PointStore& points, LocalIndex p, double eps) const {
   const int body = points.body[p];
   double mass = 0.0, mass_left = 0.0;
-  Vec3 momentum = Vec3::Zero();
+  Vec3 momentum = Vec3::Zero(), momentum_left = Vec3::Zero();
   cells_.forEachWithin(points.x[p], eps, [&](LocalIndex k, double) {
     const LocalIndex q = candidate_[k];
     if (points.body[q] != body) return;
     mass += points.mass[q];
     momentum += points.mass[q] * points.v[q];
-    if (!erode_[q]) mass_left += points.mass[q];
+    if (erode_[q]) return;
+    mass_left += points.mass[q];
+    momentum_left += points.mass[q] * points.v[q];
   });
   if (mass_left <= 0.0) return;  // nothing stays intact to take the difference: keep v_p
   const Vec3 mean = momentum / mass;
   const Vec3 dv = points.mass[p] * (points.v[p] - mean) / mass_left;
+  // The kinetic energy this exchange takes (or gives) stays in the debris as internal energy, so
+  // erosion conserves the total energy as well as the momentum.
+  const double heat = 0.5 * points.mass[p] * (points.v[p].squaredNorm() - mean.squaredNorm()) -
+                      momentum_left.dot(dv) - 0.5 * mass_left * dv.squaredNorm();
+  points.energy[p] += heat / points.mass[p];
   points.v[p] = mean;
   cells_.forEachWithin(points.x[p], eps, [&](LocalIndex k, double) {
     const LocalIndex q = candidate_[k];

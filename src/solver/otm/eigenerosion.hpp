@@ -12,7 +12,9 @@
 // FLIP-style velocity transfer leaves noise on point velocities under shocks (tens of percent of
 // the impact speed, invisible while the point moves with the nodes) that would otherwise become
 // the debris' flight velocity. The difference m_p (v_p - mean) goes, evenly by mass, to the
-// points of the ball that stay intact, so linear momentum is exact (docs/theory.md §8).
+// points of the ball that stay intact, so linear momentum is exact; the kinetic energy the
+// exchange takes becomes the debris' internal energy, so the total energy is exact too
+// (docs/theory.md §8).
 #include "search/cell_list.hpp"
 #include "solver/otm/model.hpp"
 #include "solver/otm/settings.hpp"

@@ -2,6 +2,7 @@
 
 #include "core/error.hpp"
 #include "core/reduce.hpp"
+#include "solver/otm/debris.hpp"
 #include "solver/otm/integrator_assembly.hpp"
 #include "solver/otm/integrator_ordering.hpp"
 
@@ -66,10 +67,15 @@ void Integrator::step() {
   {
     ScopedPhase phase(timers_, "erosion");
     eroded_ += erosion_.apply(model_);
+    if (settings_.debris_capture) markNewDebris(model_);
   }
   neighbourhoods_.update(model_);
   timers_.add("search", neighbourhoods_.searchSeconds());
   timers_.add("shape functions", neighbourhoods_.shapeSeconds());
+  if (!neighbourhoods_.caught().empty()) {
+    ScopedPhase phase(timers_, "erosion");
+    catchDebris(model_, neighbourhoods_.caught());
+  }
   time_ += dt;
   dt_last_ = dt;
   ++steps_;
@@ -125,8 +131,8 @@ void Integrator::updatePoints() {
   j_point_.resize(static_cast<std::size_t>(points.owned));  // det(dF) of each intact point
 #pragma omp parallel for schedule(static) reduction(min : bad)
   for (LocalIndex p = 0; p < points.owned; ++p) {
-    if (points.eroded[p]) {
-      // Debris: ballistic flight with the point's own velocity.
+    if (points.eroded[p] && points.carrier[p] < 0) {
+      // Debris in flight: ballistic, with the point's own velocity.
       points.x[p] += dt_step_ * points.v[p];
       points.dF[p].setIdentity();
       continue;
@@ -138,6 +144,13 @@ void Integrator::updatePoints() {
       dx += conn.N[e] * du_[a];
       dv += conn.N[e] * dv_[a];
       dF.noalias() += du_[a] * conn.dN[e].transpose();
+    }
+    if (points.eroded[p]) {
+      // Debris a body has caught: carried by its nodes, with no strain of its own.
+      points.x[p] += dx;
+      points.v[p] += dv;
+      points.dF[p].setIdentity();
+      continue;
     }
     const double J = dF.determinant();
     if (!(J > 0.0) || !std::isfinite(J)) bad = std::min(bad, p);
@@ -203,7 +216,8 @@ void Integrator::updateMaterials(double dt) {
   LocalIndex bad = points.owned;
 #pragma omp parallel for schedule(static) reduction(min : bad)
   for (LocalIndex p = 0; p < points.owned; ++p)
-    if (!points.stress[p].allFinite() || !std::isfinite(points.energy[p]) || !(points.sound_speed[p] > 0.0))
+    if (!points.stress[p].allFinite() || !std::isfinite(points.energy[p]) ||
+        !(points.eroded[p] || points.sound_speed[p] > 0.0))  // debris takes no part in the time step
       bad = std::min(bad, p);
   if (bad < points.owned) failAtPoint(bad, "the material update gave a non-finite stress, energy or sound speed");
 }

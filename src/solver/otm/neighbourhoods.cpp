@@ -3,6 +3,7 @@
 #include "approx/lme.hpp"
 #include "core/error.hpp"
 #include "core/timer.hpp"
+#include "solver/otm/debris.hpp"
 
 #include <omp.h>
 
@@ -101,6 +102,9 @@ int Neighbourhoods::gather(const Model& model, LocalIndex p, double scale, bool 
     for (const auto& [a, d2] : s.candidates)
       if (nodes.body[a] == own || s.nearest_foreign[nodes.body[a]] <= contact2) s.node.push_back(a);
     s.visible = s.node.size();
+    if (s.touching.size() == model.bodies.size())
+      for (std::size_t b = 0; b < s.touching.size(); ++b)
+        if (s.nearest_foreign[b] <= contact2) s.touching[static_cast<std::size_t>(own)] |= std::uint64_t{1} << b;
     if (visibility) {
       collectOccluders(points.x[p], own, radius, s);
       if (!s.occluders.empty()) {
@@ -116,6 +120,34 @@ int Neighbourhoods::gather(const Model& model, LocalIndex p, double scale, bool 
   return static_cast<int>(s.node.size());
 }
 
+int Neighbourhoods::gatherDebris(const Model& model, LocalIndex p, Scratch& s) const {
+  const NodeStore& nodes = model.nodes;
+  const PointStore& points = model.points;
+  s.node.clear();
+  const auto passes_through = static_cast<std::uint64_t>(points.passes_through[p]);
+  if (passes_through == 0 || !settings_.debris_capture) return 0;
+  const double h = points.spacing(p);
+  const double radius = lme::cutoffRadius(settings_.lme_gamma, h, settings_.lme_tolerance);
+  s.candidates.clear();
+  cells_.forEachWithin(points.x[p], radius, [&](LocalIndex a, double d2) {
+    if (nodes.mass[a] > 0.0 && !((passes_through >> nodes.body[a]) & 1u)) s.candidates.emplace_back(a, d2);
+  });
+  int carrier = points.carrier[p];
+  if (carrier < 0) {
+    double nearest = settings_.contact_distance * settings_.contact_distance * h * h;
+    for (const auto& [a, d2] : s.candidates)
+      if (d2 <= nearest) {
+        nearest = d2;
+        carrier = nodes.body[a];
+      }
+    if (carrier < 0) return 0;
+  }
+  for (const auto& [a, d2] : s.candidates)
+    if (nodes.body[a] == carrier) s.node.push_back(a);
+  if (static_cast<int>(s.node.size()) < settings_.min_neighbours) s.node.clear();
+  return static_cast<int>(s.node.size());
+}
+
 lme::Result Neighbourhoods::shapeFunctionsAt(Model& model, LocalIndex p, std::span<const LocalIndex> row,
                                              std::span<double> N, std::span<Vec3> dN, Scratch& s) const {
   const PointStore& points = model.points;
@@ -123,6 +155,25 @@ lme::Result Neighbourhoods::shapeFunctionsAt(Model& model, LocalIndex p, std::sp
   for (std::size_t i = 0; i < row.size(); ++i) s.offsets[i] = points.x[p] - model.nodes.x[row[i]];
   const double h = points.spacing(p);
   return lme::shapeFunctions(s.offsets, lme::beta(settings_.lme_gamma, h), h, model.points.lambda[p], N, dN);
+}
+
+void Neighbourhoods::carryDebris(Model& model, LocalIndex p, Index first, std::size_t n, Scratch& s) const {
+  PointStore& points = model.points;
+  Connectivity& conn = model.connectivity;
+  const int carrier = model.nodes.body[conn.node[first]];
+  const bool newly = points.carrier[p] != carrier;
+  if (newly) points.lambda[p].setZero();  // the warm start is from the point's intact past
+  const std::span<double> N(conn.N.data() + first, n);
+  const std::span<Vec3> dN(conn.dN.data() + first, n);
+  if (shapeFunctionsAt(model, p, std::span<const LocalIndex>(conn.node.data() + first, n), N, dN, s).status ==
+      lme::Status::converged) {
+    if (newly) s.caught.push_back(p);
+    points.carrier[p] = carrier;
+    return;
+  }
+  std::fill(N.begin(), N.end(), 0.0);
+  std::fill(dN.begin(), dN.end(), Vec3::Zero());
+  points.carrier[p] = -1;
 }
 
 // A point near a strongly compressed or re-entrant surface can fall outside the hull of the nodes
@@ -247,6 +298,9 @@ void Neighbourhoods::update(Model& model) {
     Scratch& s = scratch_[static_cast<std::size_t>(t)];
     s.nearest_foreign.resize(bodies);
     s.retry.clear();
+    s.caught.clear();
+    // Contacts are recorded for the bodies debris capture can tell apart (one bit each).
+    s.touching.assign(bodies <= max_capturing_bodies ? bodies : 0, 0);
     // Chunks of points, dynamically scheduled (points near cracks cost more: the visibility
     // test); a chunk's node lists go to the searching thread's rows, in point order, and the
     // chunk remembers which thread and where.
@@ -257,10 +311,14 @@ void Neighbourhoods::update(Model& model) {
       chunk_start_[c] = s.rows.size();
       const LocalIndex end = std::min<LocalIndex>(np, (c + 1) * chunk);
       for (LocalIndex p = c * chunk; p < end; ++p) {
-        // Eroded points are debris flying ballistically: no neighbourhood, no shape functions.
-        if (points.eroded[p]) continue;
-        count_[p] = gather(model, p, 1.0, settings_.crack_visibility, s);
-        visible_[p] = static_cast<int>(s.visible);
+        // Eroded points are debris: a row only while a body carries them.
+        if (points.eroded[p]) {
+          count_[p] = visible_[p] = gatherDebris(model, p, s);
+          if (count_[p] == 0) points.carrier[p] = -1;
+        } else {
+          count_[p] = gather(model, p, 1.0, settings_.crack_visibility, s);
+          visible_[p] = static_cast<int>(s.visible);
+        }
         s.rows.insert(s.rows.end(), s.node.begin(), s.node.end());
       }
     }
@@ -279,13 +337,17 @@ void Neighbourhoods::update(Model& model) {
     Stopwatch shape_watch;
 #pragma omp for schedule(dynamic, 256) nowait
     for (LocalIndex p = 0; p < np; ++p) {
-      if (points.eroded[p]) continue;
+      if (points.eroded[p] && count_[p] == 0) continue;
       const LocalIndex c = p / chunk;
       const Index first = conn.offset[p];
       const auto n = static_cast<std::size_t>(count_[p]);
       const LocalIndex* row = scratch_[static_cast<std::size_t>(chunk_thread_[c])].rows.data() + chunk_start_[c] +
                               (first - conn.offset[c * chunk]);
       std::copy_n(row, n, conn.node.begin() + first);
+      if (points.eroded[p]) {
+        carryDebris(model, p, first, n, s);
+        continue;
+      }
       // Over the visible nodes; the hidden ones, at the end of the row, get zero weight. A point
       // that lies outside the hull of its visible nodes (boxed in by eroded points rather than
       // facing a crack) takes them all.
@@ -306,7 +368,16 @@ void Neighbourhoods::update(Model& model) {
 #pragma omp critical
     shape_time = std::max(shape_time, my_shape_time);
   }
+  caught_.clear();
+  for (const Scratch& s : scratch_) caught_.insert(caught_.end(), s.caught.begin(), s.caught.end());
+  std::sort(caught_.begin(), caught_.end());
   retryFailedPoints(model);
+  if (bodies <= max_capturing_bodies) {
+    std::vector<std::uint64_t> touching(bodies, 0);
+    for (const Scratch& s : scratch_)
+      for (std::size_t b = 0; b < bodies; ++b) touching[b] |= s.touching[b];
+    recordContacts(model, touching);
+  }
   conn.buildTranspose(nodes.size(), transpose_scratch_);
   const double total = watch.seconds();
   shape_seconds_ = shape_time;

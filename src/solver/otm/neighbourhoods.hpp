@@ -21,6 +21,9 @@ class Neighbourhoods {
   // its shape functions cannot be built (outside the convex hull of its nodes, no nodes).
   void update(Model& model);
 
+  // The debris points caught by a body in the last update (solver/otm/debris.hpp), in point order.
+  std::span<const LocalIndex> caught() const { return caught_; }
+
   // Time spent in the search and in the shape functions during the last update.
   double searchSeconds() const { return search_seconds_; }
   double shapeSeconds() const { return shape_seconds_; }
@@ -37,12 +40,22 @@ class Neighbourhoods {
     std::vector<double> nearest_foreign;  // squared distance per body
     std::vector<Vec3> offsets;
     std::vector<Vec3> occluders;  // eroded points near the point being processed
+    std::vector<LocalIndex> caught;  // debris points this thread saw caught
+    std::vector<std::uint64_t> touching;  // per body: bodies whose nodes its points took (contact)
   };
 
   // Collects the neighbour nodes of point p within `scale` times its cut-off radius into
   // s.node; returns their count. With `visibility`, nodes hidden behind eroded points (see
   // hidden()) go to the end of the list, after the s.visible visible ones.
   int gather(const Model& model, LocalIndex p, double scale, bool visibility, Scratch& s) const;
+  // The row of debris point p (eroded): the nodes of the body that carries it, or of the body it
+  // reaches (nearest node within the contact distance, not a body it passes through, nodes with
+  // mass only); empty if it flies on. Returns the row length.
+  int gatherDebris(const Model& model, LocalIndex p, Scratch& s) const;
+  // Shape functions of debris point p over its row (entries [first, first + n) of the
+  // connectivity): carried by the row's body if they converge (a new catch is noted in
+  // s.caught), released to fly on with a zero row if not (outside the hull: a perforated wall).
+  void carryDebris(Model& model, LocalIndex p, Index first, std::size_t n, Scratch& s) const;
   // Visibility across cracks: node position xa is hidden from point p when the segment between
   // them crosses eroded material, i.e. a sample on it lies nearer an eroded point (of
   // s.occluders, within `spacing`) than any intact one. collectOccluders: the eroded points
@@ -69,6 +82,7 @@ class Neighbourhoods {
   std::vector<int> chunk_thread_;         // per chunk of points: the thread that searched it
   std::vector<std::size_t> chunk_start_;  // and where its node lists start in that thread's rows
   std::vector<Index> transpose_scratch_;
+  std::vector<LocalIndex> caught_;
   double search_seconds_ = 0.0, shape_seconds_ = 0.0;
 };
 

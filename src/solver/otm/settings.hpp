@@ -41,6 +41,11 @@ struct Settings {
   // erosion of a shocked impact target it leaves points one-sided neighbourhoods and the run
   // becomes unstable (measured on examples/sphere-plate.yaml).
   bool crack_visibility = false;
+  // Debris capture (solver/otm/debris.hpp): an eroded point that reaches a body it may hit (not its
+  // own, nor one its body touched when it eroded) joins that body's nodes, moving with them and
+  // loading them with its mass and momentum, until it leaves their hull again. Without it, debris
+  // passes through every body (a Whipple shield's rear wall would never be hit).
+  bool debris_capture = true;
   std::vector<RigidWall> walls;
   // Eigenerosion (DESIGN.md §2 step 8): radius of the ball B_eps as a multiple of the point
   // spacing h.

@@ -66,7 +66,8 @@ long differences(const otm::Model& a, const otm::Model& b) {
          differing(p.plastic_strain, q.plastic_strain) + differing(p.temperature, q.temperature) +
          differing(p.damage, q.damage) + differing(p.strain_energy, q.strain_energy) +
          differing(p.ductile_work, q.ductile_work) + differing(p.viscous_pressure, q.viscous_pressure) +
-         differing(p.be, q.be) + differing(p.eroded, q.eroded) + differing(p.lambda, q.lambda) + differing(m.id, n.id) +
+         differing(p.be, q.be) + differing(p.eroded, q.eroded) + differing(p.passes_through, q.passes_through) +
+         differing(p.carrier, q.carrier) + differing(p.lambda, q.lambda) + differing(m.id, n.id) +
          differing(m.body, n.body) + differing(m.x, n.x) + differing(m.v, n.v) + differing(m.mass, n.mass) +
          differing(m.momentum, n.momentum) + differing(m.force, n.force) + differing(m.constrained, n.constrained) +
          differing(m.prescribed_v, n.prescribed_v) + differing(a.connectivity.offset, b.connectivity.offset) +
@@ -123,6 +124,10 @@ TEST_F(CheckpointTest, RestoresTheModelAndTheRunStateBitwise) {
   ASSERT_EQ(restored.bodies.size(), 2u);
   EXPECT_EQ(restored.bodies[1].name, "flyer");
   EXPECT_EQ(restored.bodies[1].point_begin, model.bodies[1].point_begin);
+  // The blocks touch: each records the other (what its debris will pass through).
+  EXPECT_EQ(model.bodies[0].touched, 0b11u);
+  EXPECT_EQ(restored.bodies[0].touched, model.bodies[0].touched);
+  EXPECT_EQ(restored.bodies[1].touched, model.bodies[1].touched);
   EXPECT_EQ(restored.materials.at(0), material_);
   EXPECT_EQ(read.integrator.steps, 5);
   EXPECT_EQ(std::memcmp(&read.integrator, &written.integrator, sizeof(otm::IntegratorState)), 0);

@@ -85,9 +85,9 @@ TEST(Eigenerosion, ErodesExactlyThePointsOfTheDefinition) {
 }
 
 // Debris leaves with the mass-weighted mean velocity of its ball, and the difference goes to the
-// ball's intact points: each body's momentum is unchanged, and the first point released (whose
+// ball's intact points: each body's momentum and the total energy are unchanged, and the first point released (whose
 // ball nobody has touched yet) moves exactly with the brute-force ball mean.
-TEST(Eigenerosion, DebrisTakesTheBallVelocityAndMomentumIsExact) {
+TEST(Eigenerosion, DebrisTakesTheBallVelocityAndMomentumAndEnergyAreExact) {
   const Settings settings;
   const double nu = 0.33;
   Model model = hotSpotModel(settings, nu);
@@ -102,7 +102,14 @@ TEST(Eigenerosion, DebrisTakesTheBallVelocityAndMomentumIsExact) {
       if (points.body[q] == body) sum += points.mass[q] * points.v[q];
     return sum;
   };
+  auto energy = [&] {
+    double sum = 0.0;
+    for (LocalIndex q = 0; q < points.size(); ++q)
+      sum += points.mass[q] * (0.5 * points.v[q].squaredNorm() + points.energy[q]);
+    return sum;
+  };
   const Vec3 before_a = momentum(0), before_b = momentum(1);
+  const double energy_before = energy();
   const std::vector<std::uint8_t> eroded_before = points.eroded;
   const std::vector<Vec3> v_before = points.v;
 
@@ -110,6 +117,8 @@ TEST(Eigenerosion, DebrisTakesTheBallVelocityAndMomentumIsExact) {
   ASSERT_GT(erosion.apply(model), 10);
   EXPECT_LT((momentum(0) - before_a).norm(), 1e-12 * before_a.norm());
   EXPECT_LT((momentum(1) - before_b).norm(), 1e-12 * before_b.norm());
+  // The kinetic energy the exchange takes stays in the debris as internal energy.
+  EXPECT_NEAR(energy(), energy_before, 1e-12 * energy_before);
 
   LocalIndex first = 0;
   while (!points.eroded[first] || eroded_before[first]) ++first;
