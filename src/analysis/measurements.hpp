@@ -104,6 +104,7 @@ struct RearWallDamage {
   long spall_fragments = 0;                   // detached fragments behind the rear face (full model)
   double spall_mass = 0.0;                    // kg
   double eroded_mass_behind = 0.0;            // kg of eroded wall points behind the rear face
+  double debris_carried = 0.0;                // kg of debris the wall has caught and still carries
   std::string classification = "none";        // none | spall | perforation
 };
 

@@ -146,6 +146,7 @@ nlohmann::json toJson(const Report& r) {
                         {"spall_fragments", w.spall_fragments},
                         {"spall_mass_kg", w.spall_mass},
                         {"eroded_mass_behind_kg", w.eroded_mass_behind},
+                        {"debris_carried_kg", w.debris_carried},
                         {"classification", w.classification}};
   }
   if (r.shield) out["ballistic_limit"] = shieldJson(*r.shield);

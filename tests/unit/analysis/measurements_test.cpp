@@ -182,7 +182,18 @@ TEST(RearWall, PerforationSpallAndNone) {
   {
     PlateModel m = plateModel();
     erodeWhere(m.model, m.plate, [](const Vec3& x) { return x.head<2>().norm() < 3 * mm; });
+    // Three of the eroded points are debris the wall has caught (and one another body carries).
+    PointStore& points = m.model.points;
+    double carried = 0.0;
+    int marked = 0;
+    for (LocalIndex p = 0; p < points.owned && marked < 4; ++p) {
+      if (!points.eroded[p]) continue;
+      points.carrier[p] = marked < 3 ? m.plate : m.plate + 1;
+      carried += marked < 3 ? points.mass[p] : 0.0;
+      ++marked;
+    }
     const RearWallDamage d = measureRearWall(m.model, findFragments(m.model, {}, {}), m.geometry);
+    EXPECT_DOUBLE_EQ(d.debris_carried, carried);
     EXPECT_EQ(d.classification, "perforation");
     ASSERT_EQ(d.perforations, 1);
     EXPECT_NEAR(d.perforation_diameters[0], 6 * mm, measureHole(m.model, m.geometry, 0).cell);
@@ -216,6 +227,7 @@ TEST(RearWall, PerforationSpallAndNone) {
     EXPECT_EQ(d.classification, "none");
     EXPECT_EQ(d.perforations, 0);
     EXPECT_EQ(d.spall_fragments, 0);
+    EXPECT_EQ(d.debris_carried, 0.0);
   }
 }
 
