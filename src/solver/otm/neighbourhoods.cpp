@@ -120,40 +120,50 @@ int Neighbourhoods::gather(const Model& model, LocalIndex p, double scale, bool 
   return static_cast<int>(s.node.size());
 }
 
+double Neighbourhoods::debrisSpacing(const PointStore& points, LocalIndex p, int body) const {
+  return std::max(points.spacing(p), body_spacing_[static_cast<std::size_t>(body)]);
+}
+
 int Neighbourhoods::gatherDebris(const Model& model, LocalIndex p, Scratch& s) const {
   const NodeStore& nodes = model.nodes;
   const PointStore& points = model.points;
   s.node.clear();
   const auto passes_through = static_cast<std::uint64_t>(points.passes_through[p]);
   if (passes_through == 0 || !settings_.debris_capture) return 0;
-  const double h = points.spacing(p);
-  const double radius = lme::cutoffRadius(settings_.lme_gamma, h, settings_.lme_tolerance);
+  auto may_hit = [&](int body) { return !((passes_through >> body) & 1u); };
+  double reach = points.spacing(p);  // the largest support of the point over the bodies it may hit
+  for (std::size_t b = 0; b < body_spacing_.size(); ++b)
+    if (may_hit(static_cast<int>(b))) reach = std::max(reach, body_spacing_[b]);
+  const double radius = lme::cutoffRadius(settings_.lme_gamma, reach, settings_.lme_tolerance);
   s.candidates.clear();
   cells_.forEachWithin(points.x[p], radius, [&](LocalIndex a, double d2) {
-    if (nodes.mass[a] > 0.0 && !((passes_through >> nodes.body[a]) & 1u)) s.candidates.emplace_back(a, d2);
+    if (nodes.mass[a] > 0.0 && may_hit(nodes.body[a])) s.candidates.emplace_back(a, d2);
   });
   int carrier = points.carrier[p];
   if (carrier < 0) {
-    double nearest = settings_.contact_distance * settings_.contact_distance * h * h;
-    for (const auto& [a, d2] : s.candidates)
-      if (d2 <= nearest) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const auto& [a, d2] : s.candidates) {
+      const double contact = settings_.contact_distance * debrisSpacing(points, p, nodes.body[a]);
+      if (d2 <= contact * contact && d2 < nearest) {
         nearest = d2;
         carrier = nodes.body[a];
       }
+    }
     if (carrier < 0) return 0;
   }
+  const double cutoff =
+      lme::cutoffRadius(settings_.lme_gamma, debrisSpacing(points, p, carrier), settings_.lme_tolerance);
   for (const auto& [a, d2] : s.candidates)
-    if (nodes.body[a] == carrier) s.node.push_back(a);
+    if (nodes.body[a] == carrier && d2 <= cutoff * cutoff) s.node.push_back(a);
   if (static_cast<int>(s.node.size()) < settings_.min_neighbours) s.node.clear();
   return static_cast<int>(s.node.size());
 }
 
 lme::Result Neighbourhoods::shapeFunctionsAt(Model& model, LocalIndex p, std::span<const LocalIndex> row,
-                                             std::span<double> N, std::span<Vec3> dN, Scratch& s) const {
+                                             std::span<double> N, std::span<Vec3> dN, Scratch& s, double h) const {
   const PointStore& points = model.points;
   s.offsets.resize(row.size());
   for (std::size_t i = 0; i < row.size(); ++i) s.offsets[i] = points.x[p] - model.nodes.x[row[i]];
-  const double h = points.spacing(p);
   return lme::shapeFunctions(s.offsets, lme::beta(settings_.lme_gamma, h), h, model.points.lambda[p], N, dN);
 }
 
@@ -165,7 +175,8 @@ void Neighbourhoods::carryDebris(Model& model, LocalIndex p, Index first, std::s
   if (newly) points.lambda[p].setZero();  // the warm start is from the point's intact past
   const std::span<double> N(conn.N.data() + first, n);
   const std::span<Vec3> dN(conn.dN.data() + first, n);
-  if (shapeFunctionsAt(model, p, std::span<const LocalIndex>(conn.node.data() + first, n), N, dN, s).status ==
+  const double h = debrisSpacing(points, p, carrier);
+  if (shapeFunctionsAt(model, p, std::span<const LocalIndex>(conn.node.data() + first, n), N, dN, s, h).status ==
       lme::Status::converged) {
     if (newly) s.caught.push_back(p);
     points.carrier[p] = carrier;
@@ -207,7 +218,7 @@ void Neighbourhoods::retryFailedPoints(Model& model) {
       s.dN.resize(start[k] + size);
       points.lambda[p].setZero();  // the warm start may be what failed
       r = shapeFunctionsAt(model, p, s.node, std::span<double>(s.N.data() + start[k], size),
-                           std::span<Vec3>(s.dN.data() + start[k], size), s);
+                           std::span<Vec3>(s.dN.data() + start[k], size), s, points.spacing(p));
       if (r.status == lme::Status::converged) break;
     }
     s.rows.insert(s.rows.end(), s.node.begin(), s.node.begin() + n);
@@ -268,11 +279,21 @@ void Neighbourhoods::update(Model& model) {
   // (release waves, spall) make the cells, and so every query, far too large.
   double radius_sum = 0.0;
   LocalIndex intact = 0;
+  // And the mean spacing of each body's intact points: the support a debris point takes among its
+  // nodes (a fine debris cloud caught by a coarse wall needs the wall's node spacing).
+  const std::size_t bodies = model.bodies.size();
+  body_spacing_.assign(bodies, 0.0);
+  body_points_.assign(bodies, 0);
   for (LocalIndex p = 0; p < np; ++p) {
     if (points.eroded[p]) continue;
-    radius_sum += lme::cutoffRadius(settings_.lme_gamma, points.spacing(p), settings_.lme_tolerance);
+    const double h = points.spacing(p);
+    radius_sum += lme::cutoffRadius(settings_.lme_gamma, h, settings_.lme_tolerance);
     ++intact;
+    body_spacing_[static_cast<std::size_t>(points.body[p])] += h;
+    ++body_points_[static_cast<std::size_t>(points.body[p])];
   }
+  for (std::size_t b = 0; b < bodies; ++b)
+    if (body_points_[b] > 0) body_spacing_[b] /= body_points_[b];
   const double cell_size = intact > 0 ? radius_sum / intact : 1.0;
   cells_.build(nodes.x, nodes.size(), std::max(cell_size, 1e-300));
   if (settings_.crack_visibility) buildOccluders(model, cell_size);
@@ -282,7 +303,6 @@ void Neighbourhoods::update(Model& model) {
   count_.assign(static_cast<std::size_t>(np), 0);
   visible_.resize(static_cast<std::size_t>(np));
   conn.offset.assign(static_cast<std::size_t>(np) + 1, 0);
-  const std::size_t bodies = model.bodies.size();
   double shape_time = 0.0;
   constexpr LocalIndex chunk = 256;
   const LocalIndex chunks = (np + chunk - 1) / chunk;
@@ -356,11 +376,11 @@ void Neighbourhoods::update(Model& model) {
       std::fill(conn.dN.begin() + first + visible, conn.dN.begin() + first + n, Vec3::Zero());
       lme::Result r = shapeFunctionsAt(model, p, std::span<const LocalIndex>(row, visible),
                                        std::span<double>(conn.N.data() + first, visible),
-                                       std::span<Vec3>(conn.dN.data() + first, visible), s);
+                                       std::span<Vec3>(conn.dN.data() + first, visible), s, points.spacing(p));
       if (r.status != lme::Status::converged && visible < n) {
         model.points.lambda[p].setZero();
         r = shapeFunctionsAt(model, p, std::span<const LocalIndex>(row, n), std::span<double>(conn.N.data() + first, n),
-                             std::span<Vec3>(conn.dN.data() + first, n), s);
+                             std::span<Vec3>(conn.dN.data() + first, n), s, points.spacing(p));
       }
       if (r.status != lme::Status::converged) s.retry.push_back(p);
     }

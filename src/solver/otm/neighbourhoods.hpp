@@ -39,8 +39,8 @@ class Neighbourhoods {
     std::vector<std::pair<LocalIndex, double>> candidates;
     std::vector<double> nearest_foreign;  // squared distance per body
     std::vector<Vec3> offsets;
-    std::vector<Vec3> occluders;  // eroded points near the point being processed
-    std::vector<LocalIndex> caught;  // debris points this thread saw caught
+    std::vector<Vec3> occluders;          // eroded points near the point being processed
+    std::vector<LocalIndex> caught;       // debris points this thread saw caught
     std::vector<std::uint64_t> touching;  // per body: bodies whose nodes its points took (contact)
   };
 
@@ -50,7 +50,8 @@ class Neighbourhoods {
   int gather(const Model& model, LocalIndex p, double scale, bool visibility, Scratch& s) const;
   // The row of debris point p (eroded): the nodes of the body that carries it, or of the body it
   // reaches (nearest node within the contact distance, not a body it passes through, nodes with
-  // mass only); empty if it flies on. Returns the row length.
+  // mass only), within the cut-off radius of debrisSpacing(); empty if it flies on. Returns the
+  // row length.
   int gatherDebris(const Model& model, LocalIndex p, Scratch& s) const;
   // Shape functions of debris point p over its row (entries [first, first + n) of the
   // connectivity): carried by the row's body if they converge (a new catch is noted in
@@ -65,9 +66,13 @@ class Neighbourhoods {
   // The points that decide visibility: the intact ones, and the eroded ones within `reach` of
   // them (debris further away hides nothing).
   void buildOccluders(const Model& model, double reach);
-  // LME shape functions of point p over the nodes `row` (warm-started from its lambda).
+  // LME shape functions of point p over the nodes `row` (warm-started from its lambda), with
+  // support size h.
   lme::Result shapeFunctionsAt(Model& model, LocalIndex p, std::span<const LocalIndex> row, std::span<double> N,
-                               std::span<Vec3> dN, Scratch& s) const;
+                               std::span<Vec3> dN, Scratch& s, double h) const;
+  // The support size of debris point p among the nodes of `body`: its own spacing, or the body's
+  // mean spacing if larger.
+  double debrisSpacing(const PointStore& points, LocalIndex p, int body) const;
   // Retries the points whose shape functions failed with larger radii; throws if one still fails.
   void retryFailedPoints(Model& model);
 
@@ -83,6 +88,8 @@ class Neighbourhoods {
   std::vector<std::size_t> chunk_start_;  // and where its node lists start in that thread's rows
   std::vector<Index> transpose_scratch_;
   std::vector<LocalIndex> caught_;
+  std::vector<double> body_spacing_;     // mean spacing of each body's intact points
+  std::vector<LocalIndex> body_points_;  // and their count
   double search_seconds_ = 0.0, shape_seconds_ = 0.0;
 };
 
