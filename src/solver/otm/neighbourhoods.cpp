@@ -132,8 +132,15 @@ int Neighbourhoods::gatherDebris(const Model& model, LocalIndex p, Scratch& s) c
   if (passes_through == 0 || !settings_.debris_capture) return 0;
   auto may_hit = [&](int body) { return !((passes_through >> body) & 1u); };
   double reach = points.spacing(p);  // the largest support of the point over the bodies it may hit
-  for (std::size_t b = 0; b < body_spacing_.size(); ++b)
-    if (may_hit(static_cast<int>(b))) reach = std::max(reach, body_spacing_[b]);
+  // Debris that may hit no body (all the debris of a projectile and the one plate it struck)
+  // searches nothing.
+  bool any = false;
+  for (std::size_t b = 0; b < body_spacing_.size(); ++b) {
+    if (!may_hit(static_cast<int>(b))) continue;
+    any = true;
+    reach = std::max(reach, body_spacing_[b]);
+  }
+  if (!any) return 0;
   const double radius = lme::cutoffRadius(settings_.lme_gamma, reach, settings_.lme_tolerance);
   s.candidates.clear();
   cells_.forEachWithin(points.x[p], radius, [&](LocalIndex a, double d2) {
