@@ -13,8 +13,9 @@
 // the impact speed, invisible while the point moves with the nodes) that would otherwise become
 // the debris' flight velocity. The difference m_p (v_p - mean) goes, evenly by mass, to the
 // points of the ball that stay intact, so linear momentum is exact; the kinetic energy the
-// exchange takes becomes the debris' internal energy, so the total energy is exact too
-// (docs/theory.md §8).
+// exchange takes becomes the debris' internal energy, so the total energy is exact too. A point
+// whose ball has no intact point left (the last of an eroding region) takes the mean over its
+// ball's debris as well, and the difference goes to those (docs/theory.md §8).
 #include "search/cell_list.hpp"
 #include "solver/otm/model.hpp"
 #include "solver/otm/settings.hpp"
@@ -36,6 +37,7 @@ class Eigenerosion {
   bool active(const Model& model) const;
 
  private:
+  void collectDebris(const PointStore& points, const std::vector<double>& gc);
   void releaseDebris(PointStore& points, LocalIndex p, double eps) const;
 
   Settings settings_;
@@ -44,6 +46,11 @@ class Eigenerosion {
   std::vector<LocalIndex> candidate_;  // ... and their point indices, in point order
   std::vector<double> cell_max_;       // largest W of the candidates in each cell
   std::vector<std::uint8_t> erode_;
+  // Debris of eroding bodies near the points eroding in this step (releaseDebris: the velocity of
+  // a point whose ball has no intact point left).
+  CellList debris_cells_;
+  std::vector<Vec3> debris_x_;
+  std::vector<LocalIndex> debris_;
 };
 
 }  // namespace kessler::otm

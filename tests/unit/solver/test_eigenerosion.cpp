@@ -136,5 +136,59 @@ TEST(Eigenerosion, DebrisTakesTheBallVelocityAndMomentumAndEnergyAreExact) {
   EXPECT_GT((v_before[first] - points.v[first]).norm(), 10.0);
 }
 
+// A whole region erodes in one step, so no ball keeps an intact point: each point then takes the
+// mean over its ball's debris too (earlier debris moving at v0, the velocity the region's noisy
+// points scatter around), and the noise does not fly off with the debris. Momentum and energy stay
+// exact.
+TEST(Eigenerosion, TheLastOfAnErodingRegionTakesTheMeanOfItsDebris) {
+  const Settings settings;
+  Model model = hotSpotModel(settings, 0.33);
+  PointStore& points = model.points;
+  const Vec3 v0(1000.0, 0.0, 0.0);
+  std::mt19937 random(5);
+  std::normal_distribution<double> noise(0.0, 500.0);
+  for (LocalIndex q = 0; q < points.size(); ++q) {
+    points.v[q] = v0;
+    if (points.body[q] != 0) continue;
+    points.strain_energy[q] = 1e12;  // body a erodes entirely
+    if (!points.eroded[q]) points.v[q] += Vec3(noise(random), noise(random), noise(random));
+  }
+  auto total = [&] {
+    Vec3 momentum = Vec3::Zero();
+    double energy = 0.0;
+    for (LocalIndex q = 0; q < points.size(); ++q) {
+      momentum += points.mass[q] * points.v[q];
+      energy += points.mass[q] * (0.5 * points.v[q].squaredNorm() + points.energy[q]);
+    }
+    return std::pair{momentum, energy};
+  };
+  auto scatter = [&](const std::vector<std::uint8_t>& which) {
+    double sum = 0.0;
+    long n = 0;
+    for (LocalIndex q = 0; q < points.size(); ++q)
+      if (which[q] && points.body[q] == 0) {
+        sum += (points.v[q] - v0).squaredNorm();
+        ++n;
+      }
+    return std::sqrt(sum / static_cast<double>(n));
+  };
+  std::vector<std::uint8_t> intact(points.size());
+  for (LocalIndex q = 0; q < points.size(); ++q) intact[q] = !points.eroded[q];
+  const auto [momentum_before, energy_before] = total();
+  const double scatter_before = scatter(intact);
+
+  Eigenerosion erosion(settings);
+  erosion.apply(model);
+  for (LocalIndex q = 0; q < points.size(); ++q)
+    if (points.body[q] == 0) {
+      ASSERT_TRUE(points.eroded[q]);
+    }
+  const auto [momentum_after, energy_after] = total();
+  EXPECT_LT((momentum_after - momentum_before).norm(), 1e-12 * momentum_before.norm());
+  EXPECT_NEAR(energy_after, energy_before, 1e-12 * energy_before);
+  // Without the debris in the mean every point would keep its own velocity: the same scatter.
+  EXPECT_LT(scatter(intact), 0.5 * scatter_before);
+}
+
 }  // namespace
 }  // namespace kessler::otm
