@@ -1,4 +1,4 @@
-// `kessler bench [NAME...] [--size tiny|small|full] [--threads N] [--steps N] [--json FILE]`
+// `kessler bench [NAME...] [--size tiny|small|full] [--threads N] [--steps N] [--set key=value ...] [--json FILE]`
 // (docs/performance.md): runs benchmark problems and reports the cost per material-point step,
 // the per-phase breakdown and the peak memory per material point.
 // Each problem runs in a child process (this program again, with --single), so that the peak
@@ -44,6 +44,7 @@ struct BenchOptions {
   int threads = 0;
   int steps = 0;
   std::string json;
+  std::vector<std::string> overrides;  // deck settings changed from the problem's ("solver.lme_gamma=4")
   bool single = false;  // run one problem in this process (the child of a bench run)
 };
 
@@ -74,12 +75,13 @@ const std::vector<std::string> phase_order = {"search",      "shape functions", 
                                               "node update", "point update",    "constitutive",
                                               "erosion",     "time step",       "output"};
 
-nlohmann::json runOne(const BenchProblem& problem, BenchSize size, int steps_wanted) {
+nlohmann::json runOne(const BenchProblem& problem, BenchSize size, int steps_wanted,
+                      const std::vector<std::string>& overrides) {
   const double target = targetPoints(problem, size);
   const double h = meshSizeFor(problem, size, target);
   const int steps = steps_wanted > 0 ? steps_wanted : defaultSteps(problem, size);
   io::RunConfig config =
-      io::parseDeckString(problem.deck(h, quarterModel(problem, size)), fmt::format("bench:{}", problem.name));
+      io::parseDeckString(problem.deck(h, quarterModel(problem, size)), fmt::format("bench:{}", problem.name), overrides);
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() / fmt::format("kessler-bench-{}-{}", getpid(), problem.name);
   std::filesystem::remove_all(dir);
@@ -157,6 +159,7 @@ nlohmann::json runOne(const BenchProblem& problem, BenchSize size, int steps_wan
       {"quarter_model", quarterModel(problem, size)},
       {"resident_end_bytes_per_point", points > 0 ? residentBytes() / points : 0.0},
       {"load_average", loadAverage()},
+      {"overrides", overrides},
   };
   if (!message.empty()) j["message"] = message;
   return j;
@@ -167,6 +170,8 @@ void printResult(const nlohmann::json& r) {
              r["name"].get<std::string>(), r["size"].get<std::string>(), r["points"].get<long>(),
              r["nodes"].get<long>(), r["mean_neighbours"].get<double>(), r["steps"].get<long>(),
              r["threads"].get<int>());
+  if (r.contains("overrides") && !r["overrides"].empty())
+    fmt::print("  with --set {}\n", fmt::join(r["overrides"].get<std::vector<std::string>>(), " --set "));
   fmt::print("  {:.3f} s stepping ({:.2f} s setup): {:.3f} us per point-step wall, {:.3f} us core (x threads)\n",
              r["wall_s"].get<double>(), r["setup_s"].get<double>(), r["us_per_point_step"].get<double>(),
              r["core_us_per_point_step"].get<double>());
@@ -205,6 +210,7 @@ nlohmann::json runChild(const std::string& name, const BenchOptions& options) {
                                    "--size",         options.size, "--json", file.string()};
   if (options.threads > 0) args.insert(args.end(), {"--threads", std::to_string(options.threads)});
   if (options.steps > 0) args.insert(args.end(), {"--steps", std::to_string(options.steps)});
+  for (const std::string& o : options.overrides) args.insert(args.end(), {"--set", o});
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -235,7 +241,7 @@ void runBench(const BenchOptions& options) {
   if (options.single) {
     KESSLER_VERIFY(names.size() == 1, "bench --single runs exactly one problem");
     log::setLevel(log::Level::quiet);
-    const nlohmann::json r = runOne(benchProblem(names.front()), size, options.steps);
+    const nlohmann::json r = runOne(benchProblem(names.front()), size, options.steps, options.overrides);
     if (!options.json.empty()) writeJson(options.json, r);
     return;
   }
@@ -266,6 +272,8 @@ void addBenchCommand(CLI::App& app) {
   bench->add_option("--steps", options->steps, "Steps per problem (default: 10 tiny, 30 or 10 full)")
       ->check(CLI::PositiveNumber);
   bench->add_option("--json", options->json, "Write the results as JSON to this file");
+  bench->add_option("--set", options->overrides,
+                    "Change a setting of the problem's deck, as for run (e.g. --set solver.lme_gamma=4)");
   bench->add_flag("--single", options->single, "Run one problem in this process (used by bench itself)")->group("");
   bench->callback([options] { runBench(*options); });
 }
