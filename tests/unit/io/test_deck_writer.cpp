@@ -93,7 +93,7 @@ TEST(ResolvedDeckText, IsInSIUnitsWithEveryDefault) {
   const std::string text = resolvedDeckText(parseDeck(deck_dir / "good_minimal.yaml"));
   for (const char* expected :
        {"density: 2700", "youngs_modulus: 70000000000", "radius: 0.005", "velocity: [0, 0, -200]",
-        "mesh_size: 0.001", "fixed: none", "end_time: ", "cfl: 0.3", "lme_gamma: 1.8", "min_neighbours: 12",
+        "mesh_size: 0.001", "fixed: none", "end_time: ", "cfl: 0.3", "lme_gamma: 4", "min_neighbours: 12",
         "max_steps: 0", "every: 5", "dir: out"})  // every = end_time / 20, within round-off
     EXPECT_NE(text.find(expected), std::string::npos) << "missing '" << expected << "' in\n" << text;
 }
