@@ -144,7 +144,7 @@ RearWallDamage measureRearWall(const otm::Model& model, const FragmentSet& fragm
   damage.body = plate.body;
 
   for (LocalIndex p = 0; p < model.points.owned; ++p)
-    if (model.points.eroded[p] && model.points.carrier[p] == plate.body)
+    if (model.points.debris(p) && model.points.carrier[p] == plate.body)
       damage.debris_carried += model.points.mass[p] * mirror.images();
   const BodyInfo& body = bodyOf(model, plate);
   for (LocalIndex p = body.point_begin; p < body.point_end; ++p)

@@ -53,6 +53,11 @@ struct UpdateConstants {
 // pressure from the equation of state at the new density and an internal energy updated with
 // the work of the step, p dV by a predictor-corrector (trapezoidal rule), the deviatoric work by
 // the midpoint rule; the artificial viscosity q adds to the pressure and its work heats.
+// A failed point (PointStore::failed: fractured, not yet released) has no deviator and bears
+// compression only, as a hydrocode's failed cell does (docs/theory.md §8): the pressure of the
+// equation of state while it is denser than its reference (the fragments squeezed together), none
+// once it has expanded; the same energy update gives it the work of that pressure and of the
+// viscosity.
 template <typename Eos, typename Law>
 void updatePoint(const Eos& eos, const Law& law, const UpdateConstants& k, PointStore& points, LocalIndex p) {
   const double m = points.mass[p];
@@ -70,20 +75,30 @@ void updatePoint(const Eos& eos, const Law& law, const UpdateConstants& k, Point
   const double p_old = -stress_old.trace() / 3.0 - q_old;
   const Mat3 s_old = stress_old + (p_old + q_old) * Mat3::Identity();
 
+  const bool failed = points.failed(p);
+  const double shear = failed ? 0.0 : k.shear_modulus;
   // Plain sound speed at the new density and old energy, for the viscosity.
   const eos::State guess = eos.evaluate(rho, points.energy[p]);
-  const double c_bulk = std::sqrt(std::max(guess.sound_speed2, 0.0) + 4.0 * k.shear_modulus / (3.0 * rho));
+  const double c_bulk = std::sqrt(std::max(guess.sound_speed2, 0.0) + 4.0 * shear / (3.0 * rho));
   const double div_v = k.dt > 0.0 ? std::log(j_step) / k.dt : 0.0;
   const double q = div_v < 0.0 ? rho * (k.c_quadratic * h * h * div_v * div_v - k.c_linear * h * c_bulk * div_v) : 0.0;
 
-  // Deviator by radial return (plastic strain, elastic b_e updated in place).
-  strength::ReturnInput in;
-  in.dF = dF;
-  in.dt = k.dt;
-  in.shear_modulus = k.shear_modulus;
-  in.temperature = points.temperature[p];
-  in.melt_temperature = law.meltingTemperature(J);
-  const strength::ReturnResult r = strength::radialReturnWith(law, in, points.be[p], points.plastic_strain[p]);
+  // Deviator by radial return (plastic strain, elastic b_e updated in place); none once failed.
+  strength::ReturnResult r;
+  if (!failed) {
+    strength::ReturnInput in;
+    in.dF = dF;
+    in.dt = k.dt;
+    in.shear_modulus = k.shear_modulus;
+    in.temperature = points.temperature[p];
+    in.melt_temperature = law.meltingTemperature(J);
+    r = strength::radialReturnWith(law, in, points.be[p], points.plastic_strain[p]);
+  } else {
+    r.deviatoric_stress.setZero();
+  }
+  const double floor = failed ? 0.0 : k.floor;
+  // Expanded fractured material pushes no more: the fragments have separated.
+  const bool separated = failed && volume >= points.volume0[p];
 
   // Rate of deformation over the step by the midpoint rule: D dt = sym(2 (dF - I)(dF + I)^-1).
   const Mat3 l_dt = 2.0 * (dF - Mat3::Identity()) * (dF + Mat3::Identity()).inverse();
@@ -95,10 +110,11 @@ void updatePoint(const Eos& eos, const Law& law, const UpdateConstants& k, Point
 
   const double e_old = points.energy[p];
   const double e_pred = e_old + (-p_old * dv + deviatoric_work + viscous_work) / m;
-  const double p_pred = eos.evaluate(rho, e_pred).pressure;
+  const double p_eos = eos.evaluate(rho, e_pred).pressure;
+  const double p_pred = separated ? 0.0 : failed ? std::max(p_eos, 0.0) : p_eos;
   const double e_new = e_old + (-0.5 * (p_old + p_pred) * dv + deviatoric_work + viscous_work) / m;
   const eos::State state = eos.evaluate(rho, e_new);
-  const double pressure = std::max(state.pressure, k.floor);
+  const double pressure = separated ? 0.0 : std::max(state.pressure, floor);
 
   // Heat: the Taylor-Quinney share of plastic work, the viscous work (shock heating), and the
   // reversible Gruneisen cooling/heating dT = -T Gamma dV/V with Gamma = (dp/de)/rho.
@@ -131,14 +147,14 @@ void updatePoint(const Eos& eos, const Law& law, const UpdateConstants& k, Point
   const double elastic = k.shear_modulus > 0.0 ? r.deviatoric_stress.squaredNorm() / (4.0 * k.shear_modulus) : 0.0;
   points.strain_energy[p] = (elastic + tension) * J + points.ductile_work[p];
   points.viscous_pressure[p] = q;
-  const double c = std::sqrt(std::max(state.sound_speed2, 0.0) + 4.0 * k.shear_modulus / (3.0 * rho));
+  const double c = std::sqrt(std::max(state.sound_speed2, 0.0) + 4.0 * shear / (3.0 * rho));
   // Signal speed with the viscosity correction of the stable step (e.g. LS-DYNA theory manual):
   // dt = h / (Q + sqrt(Q^2 + c^2)), Q = C_l c + C_q h |div v| when compressing.
   const double Q = div_v < 0.0 ? k.c_linear * c + k.c_quadratic * h * std::abs(div_v) : 0.0;
   points.sound_speed[p] = Q + std::sqrt(Q * Q + c * c);
-  if (damage >= 1.0) {
-    points.eroded[p] = 1;
-    points.stress[p].setZero();
+  if (damage >= 1.0 && !failed) {
+    points.fail(p);  // fractured: from now on compression only
+    points.stress[p] = -(std::max(pressure, 0.0) + q) * Mat3::Identity();
     return;
   }
   points.stress[p] = r.deviatoric_stress - (pressure + q) * Mat3::Identity();
@@ -162,7 +178,7 @@ void ImpactMaterial::update(PointStore& points, LocalIndex begin, LocalIndex end
       [&](const auto& eos, const auto& law) {
 #pragma omp parallel for schedule(static)
         for (LocalIndex p = begin; p < end; ++p) {
-          if (points.eroded[p]) {
+          if (points.debris(p)) {
             // Debris: keeps mass and momentum, carries no stress.
             points.stress[p].setZero();
             points.viscous_pressure[p] = 0.0;

@@ -13,13 +13,13 @@
 namespace kessler {
 
 struct NodeStore {
-  std::vector<Index> id;           // global id
-  std::vector<std::int32_t> body;  // body the node was created with
-  std::vector<Vec3> x;             // position
-  std::vector<Vec3> v;             // velocity over the last step, (x_k+1 - x_k)/dt
-  std::vector<double> mass;        // lumped mass, sum_p N_a(x_p) m_p
-  std::vector<Vec3> momentum;      // l_a = sum_p N_a(x_p) m_p v_p
-  std::vector<Vec3> force;         // internal force
+  std::vector<Index> id;                  // global id
+  std::vector<std::int32_t> body;         // body the node was created with
+  std::vector<Vec3> x;                    // position
+  std::vector<Vec3> v;                    // velocity over the last step, (x_k+1 - x_k)/dt
+  std::vector<double> mass;               // lumped mass, sum_p N_a(x_p) m_p
+  std::vector<Vec3> momentum;             // l_a = sum_p N_a(x_p) m_p v_p
+  std::vector<Vec3> force;                // internal force
   std::vector<std::uint8_t> constrained;  // bit i set: velocity component i is prescribed
   std::vector<Vec3> prescribed_v;         // prescribed velocity components
   LocalIndex owned = 0;
@@ -35,29 +35,30 @@ struct PointStore {
   std::vector<std::int32_t> body;
   std::vector<Vec3> x;
   std::vector<Vec3> v;
-  std::vector<double> mass;     // fixed
-  std::vector<double> volume;   // current
-  std::vector<double> volume0;  // reference
-  std::vector<double> spacing0; // reference support size h (mean edge of the initial tet)
-  std::vector<Mat3> F;          // deformation gradient
-  std::vector<Mat3> dF;         // increment of the last step
-  std::vector<Mat3> stress;     // Cauchy stress
-  std::vector<double> energy;   // specific internal energy (J/kg)
-  std::vector<double> sound_speed;      // longitudinal wave speed, for the time step
-  std::vector<double> plastic_strain;   // equivalent plastic strain
-  std::vector<double> temperature;      // K
-  std::vector<double> damage;           // Johnson-Cook damage D in [0, 1]
-  std::vector<double> strain_energy;    // energy density driving eigenerosion, J/m^3 of reference volume
-  std::vector<double> ductile_work;     // plastic work above the triaxiality cut-off, J/m^3 of reference volume
-  std::vector<double> viscous_pressure; // artificial bulk viscosity q, Pa (part of stress)
-  std::vector<Mat3> be;                 // elastic left Cauchy-Green tensor (plasticity)
-  std::vector<std::uint8_t> eroded;     // 1: failed, carries no stress
+  std::vector<double> mass;              // fixed
+  std::vector<double> volume;            // current
+  std::vector<double> volume0;           // reference
+  std::vector<double> spacing0;          // reference support size h (mean edge of the initial tet)
+  std::vector<Mat3> F;                   // deformation gradient
+  std::vector<Mat3> dF;                  // increment of the last step
+  std::vector<Mat3> stress;              // Cauchy stress
+  std::vector<double> energy;            // specific internal energy (J/kg)
+  std::vector<double> sound_speed;       // longitudinal wave speed, for the time step
+  std::vector<double> plastic_strain;    // equivalent plastic strain
+  std::vector<double> temperature;       // K
+  std::vector<double> damage;            // Johnson-Cook damage D in [0, 1]
+  std::vector<double> strain_energy;     // energy density driving eigenerosion, J/m^3 of reference volume
+  std::vector<double> ductile_work;      // plastic work above the triaxiality cut-off, J/m^3 of reference volume
+  std::vector<double> viscous_pressure;  // artificial bulk viscosity q, Pa (part of stress)
+  std::vector<Mat3> be;                  // elastic left Cauchy-Green tensor (plasticity)
+  std::vector<std::uint8_t> eroded;      // 1: failed (eigenerosion or damage): no strength, see failed()
   // Debris capture (solver/otm/debris.hpp), for eroded points: bit b set if body b cannot catch
-  // the point (its own body and the bodies that body touched when it eroded; 0 before erosion),
-  // and the body whose nodes carry it now (-1: ballistic).
+  // the point (its own body and the bodies that body touched when it was released; 0 before),
+  // and the body whose nodes carry it now: its own while it is failed but not yet released,
+  // another body that caught it, or -1 (ballistic).
   std::vector<std::int64_t> passes_through;
   std::vector<std::int32_t> carrier;
-  std::vector<Vec3> lambda;     // LME Lagrange multiplier, warm start for the next solve
+  std::vector<Vec3> lambda;  // LME Lagrange multiplier, warm start for the next solve
   LocalIndex owned = 0;
 
   LocalIndex size() const { return static_cast<LocalIndex>(x.size()); }
@@ -65,6 +66,16 @@ struct PointStore {
   // Reorders every array: new index i holds what old index order[i] held (order: a permutation).
   void permute(const std::vector<LocalIndex>& order);
   double density(LocalIndex p) const { return mass[p] / volume[p]; }
+  // The states of a point (docs/theory.md §8): intact; failed, still part of its body, bearing
+  // compression only (no strength, no tension: fractured material under pressure); debris,
+  // released once it bears no compression: ballistic, or carried by a body that caught it.
+  bool failed(LocalIndex p) const { return eroded[p] && carrier[p] == body[p]; }
+  bool debris(LocalIndex p) const { return eroded[p] && carrier[p] != body[p]; }
+  // An intact point fails: it stays in its body until the integrator releases it.
+  void fail(LocalIndex p) {
+    eroded[p] = 1;
+    carrier[p] = body[p];
+  }
   // Current support size: the reference spacing scaled with the volume change.
   double spacing(LocalIndex p) const;
 };

@@ -17,7 +17,7 @@ void markNewDebris(Model& model) {
   PointStore& points = model.points;
   const bool capture = model.bodies.size() <= max_capturing_bodies;
   for (LocalIndex p = 0; p < points.owned; ++p) {
-    if (!points.eroded[p] || points.passes_through[p] != 0) continue;
+    if (!points.debris(p) || points.passes_through[p] != 0) continue;
     const BodyInfo& body = model.bodies[static_cast<std::size_t>(points.body[p])];
     const std::uint64_t bits = capture ? bodyBit(points.body[p]) | body.touched : ~std::uint64_t{0};
     points.passes_through[p] = static_cast<std::int64_t>(bits);
@@ -56,7 +56,7 @@ double catchDebris(Model& model, std::span<const LocalIndex> caught) {
       for (Index k = conn.node_offset[a]; k < conn.node_offset[a + 1]; ++k) {
         const Index f = conn.node_entry[k];
         const LocalIndex q = conn.entry_point[f];
-        if (!points.eroded[q]) weight += conn.N[f] * points.mass[q];
+        if (!points.debris(q)) weight += conn.N[f] * points.mass[q];
       }
       if (!(weight > 0.0)) {
         kept += share;
@@ -65,7 +65,7 @@ double catchDebris(Model& model, std::span<const LocalIndex> caught) {
       for (Index k = conn.node_offset[a]; k < conn.node_offset[a + 1]; ++k) {
         const Index f = conn.node_entry[k];
         const LocalIndex q = conn.entry_point[f];
-        if (points.eroded[q]) continue;
+        if (points.debris(q)) continue;
         heat += kinetic(q);
         points.v[q] += (conn.N[f] / weight) * share;
         heat -= kinetic(q);

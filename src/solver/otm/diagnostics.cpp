@@ -108,7 +108,7 @@ void Diagnostics::checkTimeStep(const Model& model, const StepInfo& at) const {
   std::vector<double> ratio(s.owned, std::numeric_limits<double>::infinity());
 #pragma omp parallel for schedule(static)
   for (LocalIndex p = 0; p < s.owned; ++p)
-    if (!s.eroded[p]) ratio[p] = stepLength(s, p) / s.sound_speed[p];
+    if (!s.debris(p)) ratio[p] = stepLength(s, p) / s.sound_speed[p];
   const auto limiting = static_cast<LocalIndex>(std::min_element(ratio.begin(), ratio.end()) - ratio.begin());
   throw NumericalError(describePoint(
       model, at, limiting,

@@ -71,93 +71,18 @@ LocalIndex Eigenerosion::apply(Model& model) {
     const double release_rate = erosionCalibration(eps, nu[body]) * energy / mass;
     if (release_rate >= gc[body]) erode_[p] = 1;
   }
-  collectDebris(points, gc);
-  LocalIndex eroded = 0;
+  LocalIndex failed = 0;
   for (LocalIndex p = 0; p < np; ++p) {
     if (!erode_[p]) continue;
-    releaseDebris(points, p, settings_.erosion_radius * points.spacing(p));
-    points.eroded[p] = 1;
-    points.stress[p].setZero();
-    points.viscous_pressure[p] = 0.0;
-    ++eroded;
+    // Fractured: no strength and no tension from now on, but the pressure it is under stays
+    // (released as debris once it bears none: solver/otm/release.hpp).
+    const double q = points.viscous_pressure[p];
+    const double pressure = std::max(-points.stress[p].trace() / 3.0 - q, 0.0);
+    points.fail(p);
+    points.stress[p] = -(pressure + q) * Mat3::Identity();
+    ++failed;
   }
-  return eroded;
-}
-
-void Eigenerosion::collectDebris(const PointStore& points, const std::vector<double>& gc) {
-  debris_x_.clear();
-  debris_.clear();
-  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-  double reach = 0.0, eps_sum = 0.0;
-  LocalIndex eroding = 0;
-  for (LocalIndex p = 0; p < points.owned; ++p) {
-    if (!erode_[p]) continue;
-    const double eps = settings_.erosion_radius * points.spacing(p);
-    lo = lo.cwiseMin(points.x[p]);
-    hi = hi.cwiseMax(points.x[p]);
-    reach = std::max(reach, eps);
-    eps_sum += eps;
-    ++eroding;
-  }
-  if (eroding == 0) return;
-  lo.array() -= reach;
-  hi.array() += reach;
-  for (LocalIndex q = 0; q < points.owned; ++q) {
-    const Vec3& x = points.x[q];
-    if (!points.eroded[q] || gc[points.body[q]] <= 0.0 || (x.array() < lo.array()).any() ||
-        (x.array() > hi.array()).any())
-      continue;
-    debris_x_.push_back(x);
-    debris_.push_back(q);
-  }
-  if (!debris_.empty()) debris_cells_.build(debris_x_, static_cast<LocalIndex>(debris_.size()), eps_sum / eroding);
-}
-
-// Serial, in point order, so the result does not depend on the thread count.
-void Eigenerosion::releaseDebris(PointStore& points, LocalIndex p, double eps) const {
-  const int body = points.body[p];
-  struct Sum {
-    double mass = 0.0;
-    Vec3 momentum = Vec3::Zero();
-  };
-  auto add = [&](Sum& sum, LocalIndex q, double sign = 1.0) {
-    sum.mass += sign * points.mass[q];
-    sum.momentum += sign * points.mass[q] * points.v[q];
-  };
-  // f(q) for the points of p's body in its ball: the candidates (intact before this step), or the
-  // debris near the eroding points.
-  auto forBall = [&](const CellList& cells, const std::vector<LocalIndex>& index, auto&& f) {
-    cells.forEachWithin(points.x[p], eps, [&](LocalIndex k, double) {
-      if (points.body[index[k]] == body) f(index[k]);
-    });
-  };
-  Sum ball, left;  // the whole ball, and its points that stay intact
-  forBall(cells_, candidate_, [&](LocalIndex q) {
-    add(ball, q);
-    if (!erode_[q]) add(left, q);
-  });
-  // Who takes the difference: the points that stay intact; if none does (the last of an eroding
-  // region), the ball's other points, eroding now or debris already, with the debris in the mean.
-  const bool lone = left.mass <= 0.0;
-  Sum receivers = left;
-  if (lone) {
-    if (!debris_.empty()) forBall(debris_cells_, debris_, [&](LocalIndex q) { add(ball, q); });
-    receivers = ball;
-    add(receivers, p, -1.0);
-    if (!(receivers.mass > 1e-12 * points.mass[p])) return;  // nothing near: keep v_p
-  }
-  const Vec3 mean = ball.momentum / ball.mass;
-  const Vec3 dv = points.mass[p] * (points.v[p] - mean) / receivers.mass;
-  // The kinetic energy this exchange takes (or gives) stays in the debris as internal energy, so
-  // erosion conserves the total energy as well as the momentum.
-  const double heat = 0.5 * points.mass[p] * (points.v[p].squaredNorm() - mean.squaredNorm()) -
-                      receivers.momentum.dot(dv) - 0.5 * receivers.mass * dv.squaredNorm();
-  points.energy[p] += heat / points.mass[p];
-  points.v[p] = mean;
-  forBall(cells_, candidate_, [&](LocalIndex q) {
-    if (lone ? q != p : !erode_[q]) points.v[q] += dv;
-  });
-  if (lone && !debris_.empty()) forBall(debris_cells_, debris_, [&](LocalIndex q) { points.v[q] += dv; });
+  return failed;
 }
 
 }  // namespace kessler::otm

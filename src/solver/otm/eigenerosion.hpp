@@ -7,15 +7,8 @@
 // mode-I near-tip energy density (plane stress) over a ball of radius eps centred on the front
 // gives <W> = 3 (5 - 3 nu) K^2 / (64 E eps), hence C_eps = 64 eps / (3 (5 - 3 nu)) makes
 // G_p = K^2 / E = G_c exactly at Griffith's load (docs/theory.md §8).
-// An eroded point keeps its mass, carries no stress and flies ballistically as debris. It leaves
-// with the mass-weighted mean velocity of the intact points of its ball, not with its own: the
-// FLIP-style velocity transfer leaves noise on point velocities under shocks (tens of percent of
-// the impact speed, invisible while the point moves with the nodes) that would otherwise become
-// the debris' flight velocity. The difference m_p (v_p - mean) goes, evenly by mass, to the
-// points of the ball that stay intact, so linear momentum is exact; the kinetic energy the
-// exchange takes becomes the debris' internal energy, so the total energy is exact too. A point
-// whose ball has no intact point left (the last of an eroding region) takes the mean over its
-// ball's debris as well, and the difference goes to those (docs/theory.md §8).
+// A point that erodes fails: it loses its strength and its tension but keeps the pressure it is
+// under, and leaves its body as debris once it bears none (solver/otm/release.hpp).
 #include "search/cell_list.hpp"
 #include "solver/otm/model.hpp"
 #include "solver/otm/settings.hpp"
@@ -30,27 +23,20 @@ double erosionCalibration(double eps, double nu);
 class Eigenerosion {
  public:
   explicit Eigenerosion(const Settings& settings) : settings_(settings) {}
-  // Evaluates G_p for every intact point of an eroding material and erodes those with
-  // G_p >= G_c. Decisions use the state before this call, so the result does not depend on the
-  // thread count. Returns the number of points eroded.
+  // Evaluates G_p for every intact point of an eroding material and fails those with
+  // G_p >= G_c (PointStore::fail, stress reduced to its compression). Decisions use the state
+  // before this call, so the result does not depend on the thread count. Returns the number of
+  // points that failed.
   LocalIndex apply(Model& model);
   bool active(const Model& model) const;
 
  private:
-  void collectDebris(const PointStore& points, const std::vector<double>& gc);
-  void releaseDebris(PointStore& points, LocalIndex p, double eps) const;
-
   Settings settings_;
-  CellList cells_;                   // over the candidates only (candidate_x_)
-  std::vector<Vec3> candidate_x_;     // intact points of eroding bodies ...
+  CellList cells_;                     // over the candidates only (candidate_x_)
+  std::vector<Vec3> candidate_x_;      // intact points of eroding bodies ...
   std::vector<LocalIndex> candidate_;  // ... and their point indices, in point order
   std::vector<double> cell_max_;       // largest W of the candidates in each cell
   std::vector<std::uint8_t> erode_;
-  // Debris of eroding bodies near the points eroding in this step (releaseDebris: the velocity of
-  // a point whose ball has no intact point left).
-  CellList debris_cells_;
-  std::vector<Vec3> debris_x_;
-  std::vector<LocalIndex> debris_;
 };
 
 }  // namespace kessler::otm

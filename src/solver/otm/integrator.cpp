@@ -5,6 +5,7 @@
 #include "solver/otm/debris.hpp"
 #include "solver/otm/integrator_assembly.hpp"
 #include "solver/otm/integrator_ordering.hpp"
+#include "solver/otm/release.hpp"
 
 #include <Eigen/Eigenvalues>
 
@@ -15,7 +16,7 @@
 namespace kessler::otm {
 
 Integrator::Integrator(Model& model, const Settings& settings)
-    : model_(model), settings_(settings), neighbourhoods_(settings), erosion_(settings) {
+    : model_(model), settings_(settings), neighbourhoods_(settings), erosion_(settings), release_(settings) {
   KESSLER_VERIFY(settings.cfl > 0.0 && settings.cfl <= 1.0, "cfl must lie in (0, 1], got {}", settings.cfl);
   KESSLER_VERIFY(settings.end_time > 0.0, "end_time must be positive, got {}", settings.end_time);
 }
@@ -25,7 +26,8 @@ void Integrator::initialise() {
   // output and checkpoint already see this order, so a restart continues with it).
   sortForLocality(model_);
   for (const BodyInfo& body : model_.bodies)
-    model_.materials[body.material]->initialise(model_.points, body.point_begin, std::min(body.point_end, model_.points.owned));
+    model_.materials[body.material]->initialise(model_.points, body.point_begin,
+                                                std::min(body.point_end, model_.points.owned));
   {
     ScopedPhase phase(timers_, "constitutive");
     updateMaterials(0.0);
@@ -67,6 +69,7 @@ void Integrator::step() {
   {
     ScopedPhase phase(timers_, "erosion");
     eroded_ += erosion_.apply(model_);
+    release_.apply(model_);
     if (settings_.debris_capture) markNewDebris(model_);
   }
   neighbourhoods_.update(model_);
@@ -87,7 +90,9 @@ void Integrator::step() {
 
 // Lumped mass, momentum and internal force gathered over each node's points
 // (solver/otm/integrator_assembly.hpp).
-void Integrator::assembleNodes() { otm::assembleNodes(model_.connectivity, model_.points, model_.nodes, loads_); }
+void Integrator::assembleNodes() {
+  otm::assembleNodes(model_.connectivity, model_.points, model_.nodes, loads_);
+}
 
 void Integrator::updateNodes(double dt, double dt_average) {
   NodeStore& nodes = model_.nodes;
@@ -128,10 +133,10 @@ void Integrator::updatePoints() {
   PointStore& points = model_.points;
   const Connectivity& conn = model_.connectivity;
   LocalIndex bad = points.owned;
-  j_point_.resize(static_cast<std::size_t>(points.owned));  // det(dF) of each intact point
+  j_point_.resize(static_cast<std::size_t>(points.owned));  // det(dF) of each point of the bodies
 #pragma omp parallel for schedule(static) reduction(min : bad)
   for (LocalIndex p = 0; p < points.owned; ++p) {
-    if (points.eroded[p] && points.carrier[p] < 0) {
+    if (points.debris(p) && points.carrier[p] < 0) {
       // Debris in flight: ballistic, with the point's own velocity.
       points.x[p] += dt_step_ * points.v[p];
       points.dF[p].setIdentity();
@@ -145,7 +150,7 @@ void Integrator::updatePoints() {
       dv += conn.N[e] * dv_[a];
       dF.noalias() += du_[a] * conn.dN[e].transpose();
     }
-    if (points.eroded[p]) {
+    if (points.debris(p)) {
       // Debris a body has caught: carried by its nodes, with no strain of its own.
       points.x[p] += dx;
       points.v[p] += dv;
@@ -153,6 +158,16 @@ void Integrator::updatePoints() {
       continue;
     }
     const double J = dF.determinant();
+    if (points.failed(p) && !(J > 0.0)) {
+      // Failed material crushed through itself by its nodes is tangled debris: released to fly
+      // on with its velocity (stress-free from now on) rather than stopping the run.
+      points.carrier[p] = -1;
+      points.stress[p].setZero();
+      points.viscous_pressure[p] = 0.0;
+      points.x[p] += dt_step_ * points.v[p];
+      points.dF[p].setIdentity();
+      continue;
+    }
     if (!(J > 0.0) || !std::isfinite(J)) bad = std::min(bad, p);
     j_point_[p] = J;
     points.x[p] += dx;
@@ -160,23 +175,23 @@ void Integrator::updatePoints() {
     points.dF[p] = dF;
   }
   if (bad < points.owned)
-    failAtPoint(bad, fmt::format("volume inverted or collapsed: det(dF) = {:.6g} over the step",
-                                 points.dF[bad].determinant()));
+    failAtPoint(
+        bad, fmt::format("volume inverted or collapsed: det(dF) = {:.6g} over the step", points.dF[bad].determinant()));
   if (settings_.volume_averaging) averageVolumeChange();
 #pragma omp parallel for schedule(static)
   for (LocalIndex p = 0; p < points.owned; ++p) {
-    if (points.eroded[p]) continue;
+    if (points.debris(p)) continue;
     points.F[p] = points.dF[p] * points.F[p];
     points.volume[p] *= j_point_[p];
   }
 }
 
 // Volume averaging (F-bar over the nodal patch; docs/theory.md §4): the step's volume change
-// det(dF) of the intact points is averaged, mass-weighted, to the nodes and interpolated back,
-// and each point's dF is scaled isotropically to that average. Point-wise volume noise, which in
-// a strong shock left some points at twice the density of their neighbours, is removed; the
-// deviatoric part of dF, the motion and the momentum are untouched. A body at rest stays
-// bitwise at rest (the weights are normalised by the same sums).
+// det(dF) of the points of the bodies (intact or failed, not debris) is averaged, mass-weighted, to the nodes and
+// interpolated back, and each point's dF is scaled isotropically to that average. Point-wise volume noise, which in a
+// strong shock left some points at twice the density of their neighbours, is removed; the deviatoric part of dF, the
+// motion and the momentum are untouched. A body at rest stays bitwise at rest (the weights are normalised by the same
+// sums).
 void Integrator::averageVolumeChange() {
   PointStore& points = model_.points;
   const Connectivity& conn = model_.connectivity;
@@ -187,7 +202,7 @@ void Integrator::averageVolumeChange() {
     for (Index k = conn.node_offset[a]; k < conn.node_offset[a + 1]; ++k) {
       const Index e = conn.node_entry[k];
       const LocalIndex p = conn.entry_point[e];
-      if (points.eroded[p]) continue;
+      if (points.debris(p)) continue;
       const double w = conn.N[e] * points.mass[p];
       m += w;
       mj += w * j_point_[p];
@@ -196,7 +211,7 @@ void Integrator::averageVolumeChange() {
   }
 #pragma omp parallel for schedule(static)
   for (LocalIndex p = 0; p < points.owned; ++p) {
-    if (points.eroded[p]) continue;
+    if (points.debris(p)) continue;
     double weight = 0.0, average = 0.0;
     for (Index e = conn.offset[p]; e < conn.offset[p + 1]; ++e) {
       weight += conn.N[e];
@@ -217,7 +232,7 @@ void Integrator::updateMaterials(double dt) {
 #pragma omp parallel for schedule(static) reduction(min : bad)
   for (LocalIndex p = 0; p < points.owned; ++p)
     if (!points.stress[p].allFinite() || !std::isfinite(points.energy[p]) ||
-        !(points.eroded[p] || points.sound_speed[p] > 0.0))  // debris takes no part in the time step
+        !(points.debris(p) || points.sound_speed[p] > 0.0))  // debris takes no part in the time step
       bad = std::min(bad, p);
   if (bad < points.owned) failAtPoint(bad, "the material update gave a non-finite stress, energy or sound speed");
 }
@@ -229,6 +244,9 @@ double smallestStretch(const Mat3& F) {
 }
 
 double stepLength(const PointStore& points, LocalIndex p) {
+  // Failed material has no shear stiffness and its F is history only (its shape functions, as
+  // everyone's, are built on the current nodes with support h): its length is its current spacing.
+  if (points.failed(p)) return points.spacing(p);
   return points.spacing0[p] * smallestStretch(points.F[p]);
 }
 
@@ -241,10 +259,10 @@ double Integrator::stableStep() const {
   double dt = std::numeric_limits<double>::infinity();
 #pragma omp parallel for schedule(static) reduction(min : dt)
   for (LocalIndex p = 0; p < points.owned; ++p) {
-    if (points.eroded[p]) continue;
+    if (points.debris(p)) continue;
     dt = std::min(dt, stepLength(points, p) / points.sound_speed[p]);
   }
-  KESSLER_VERIFY(std::isfinite(dt) && dt > 0.0, "no stable time step: every point is eroded or the model is empty");
+  KESSLER_VERIFY(std::isfinite(dt) && dt > 0.0, "no stable time step: every point is debris or the model is empty");
   return settings_.cfl * dt;
 }
 
@@ -262,9 +280,9 @@ Energies Integrator::energies() const {
 void Integrator::failAtPoint(LocalIndex p, const std::string& what) const {
   const PointStore& points = model_.points;
   const Vec3& x = points.x[p];
-  throw NumericalError(fmt::format("step {}, t = {:.6g} s: material point {} of body '{}' at ({:.6g}, {:.6g}, {:.6g}) m: {}",
-                                   steps_ + 1, time_, points.id[p], model_.bodies[points.body[p]].name, x[0], x[1],
-                                   x[2], what));
+  throw NumericalError(
+      fmt::format("step {}, t = {:.6g} s: material point {} of body '{}' at ({:.6g}, {:.6g}, {:.6g}) m: {}", steps_ + 1,
+                  time_, points.id[p], model_.bodies[points.body[p]].name, x[0], x[1], x[2], what));
 }
 
 }  // namespace kessler::otm

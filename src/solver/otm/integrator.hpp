@@ -8,6 +8,7 @@
 #include "solver/otm/integrator_assembly.hpp"
 #include "solver/otm/model.hpp"
 #include "solver/otm/neighbourhoods.hpp"
+#include "solver/otm/release.hpp"
 #include "solver/otm/settings.hpp"
 
 namespace kessler::otm {
@@ -15,8 +16,9 @@ namespace kessler::otm {
 // The smallest principal stretch of F (the square root of the smallest eigenvalue of F^T F): the
 // time step's length scale is the reference spacing times it.
 double smallestStretch(const Mat3& F);
-// That length of point p: h0 times the smallest principal stretch. The stable step is cfl times
-// the smallest stepLength / c over the intact points.
+// That length of point p: h0 times the smallest principal stretch (a failed point: its current
+// spacing). The stable step is cfl times the smallest stepLength / c over the points that are
+// not debris.
 double stepLength(const PointStore& points, LocalIndex p);
 
 struct Energies {
@@ -74,18 +76,19 @@ class Integrator {
   Settings settings_;
   Neighbourhoods neighbourhoods_;
   Eigenerosion erosion_;
-  std::vector<Vec3> dv_;  // nodal velocity increment of the step (FLIP-style transfer to points)
-  std::vector<Vec3> du_;  // nodal displacement of the step
+  DebrisRelease release_;
+  std::vector<Vec3> dv_;                  // nodal velocity increment of the step (FLIP-style transfer to points)
+  std::vector<Vec3> du_;                  // nodal displacement of the step
   std::vector<double> j_point_, j_node_;  // det(dF) per point (after averaging), averaged per node
-  std::vector<PointLoad> loads_;  // assembly scratch, one record per point
-  double dt_step_ = 0.0;  // length of the step in progress
+  std::vector<PointLoad> loads_;          // assembly scratch, one record per point
+  double dt_step_ = 0.0;                  // length of the step in progress
   PhaseTimers timers_;
   double time_ = 0.0;
   double dt_last_ = 0.0;  // dt_k: the step just taken (0 before the first)
   double dt_next_ = 0.0;  // dt_k+1
   double dt_initial_ = 0.0;
   long steps_ = 0;
-  LocalIndex eroded_ = 0;  // points eroded so far
+  LocalIndex eroded_ = 0;  // points eigenerosion has failed so far
 };
 
 }  // namespace kessler::otm

@@ -13,7 +13,7 @@ void assembleNodes(const Connectivity& conn, const PointStore& points, NodeStore
       PointLoad& load = loads[p];
       load.mass = points.mass[p];
       load.momentum = points.mass[p] * points.v[p];
-      if (points.eroded[p])
+      if (points.debris(p))
         load.minus_volume_stress.setZero();
       else
         load.minus_volume_stress = -points.volume[p] * points.stress[p];

@@ -2,7 +2,7 @@
 // Step 3-4 of the OTM step (DESIGN.md §2): lumped nodal mass m_a = sum_p N_a m_p, momentum
 // l_a = sum_p N_a m_p v_p and internal force f_a = -sum_p V_p sigma_p grad N_a.
 // Two passes: a point-major pass packs what every entry of a point needs (m_p, m_p v_p and
-// -V_p sigma_p, zero for an eroded point) into one contiguous record per point; the node-major
+// -V_p sigma_p, zero for debris) into one contiguous record per point; the node-major
 // pass then gathers over each node's entries in point order. The gather reads one record per
 // entry instead of five scattered arrays, and its summation order does not depend on the
 // number of threads.
@@ -14,7 +14,7 @@
 namespace kessler::otm {
 
 struct PointLoad {
-  Mat3 minus_volume_stress;  // -V_p sigma_p (zero for an eroded point)
+  Mat3 minus_volume_stress;  // -V_p sigma_p (zero for debris)
   Vec3 momentum;             // m_p v_p
   double mass;               // m_p
 };

@@ -196,8 +196,8 @@ void Neighbourhoods::carryDebris(Model& model, LocalIndex p, Index first, std::s
 
 // A point near a strongly compressed or re-entrant surface can fall outside the hull of the nodes
 // within its cut-off: it is retried from lambda = 0 with radii 1.5, 2.25 and 3.375 times larger,
-// before the run stops (without the visibility test). Rare, so the connectivity is then rebuilt
-// with the retried rows.
+// before the run stops (without the visibility test); a failed point is released instead. Rare,
+// so the connectivity is then rebuilt with the retried rows.
 void Neighbourhoods::retryFailedPoints(Model& model) {
   PointStore& points = model.points;
   Connectivity& conn = model.connectivity;
@@ -231,6 +231,16 @@ void Neighbourhoods::retryFailedPoints(Model& model) {
     s.rows.insert(s.rows.end(), s.node.begin(), s.node.begin() + n);
     start[k + 1] = start[k] + static_cast<std::size_t>(n);
     count_[p] = n;
+    if (r.status != lme::Status::converged && points.failed(p)) {
+      // Failed material outside the hull of every neighbourhood is leaving its body: released to
+      // fly on (a zero row), with the velocity it has.
+      std::fill(s.N.begin() + static_cast<std::ptrdiff_t>(start[k]), s.N.end(), 0.0);
+      std::fill(s.dN.begin() + static_cast<std::ptrdiff_t>(start[k]), s.dN.end(), Vec3::Zero());
+      points.carrier[p] = -1;
+      points.stress[p].setZero();
+      points.viscous_pressure[p] = 0.0;
+      continue;
+    }
     if (r.status != lme::Status::converged && failed == np) {
       failed = p;
       failure = r;
@@ -338,8 +348,8 @@ void Neighbourhoods::update(Model& model) {
       chunk_start_[c] = s.rows.size();
       const LocalIndex end = std::min<LocalIndex>(np, (c + 1) * chunk);
       for (LocalIndex p = c * chunk; p < end; ++p) {
-        // Eroded points are debris: a row only while a body carries them.
-        if (points.eroded[p]) {
+        // Debris has a row only while a body carries it; failed points search as intact ones.
+        if (points.debris(p)) {
           count_[p] = visible_[p] = gatherDebris(model, p, s);
           if (count_[p] == 0) points.carrier[p] = -1;
         } else {
@@ -359,19 +369,19 @@ void Neighbourhoods::update(Model& model) {
       conn.dN.resize(entries);
     }
     // Each point's row and shape functions depend on nothing but the point, so any schedule gives
-    // the same result: dynamic, since the cost varies (eroded points cost nothing, contact rows
+    // the same result: dynamic, since the cost varies (debris costs nothing, contact rows
     // are longer). The row comes from the node lists of the thread that searched the point's chunk.
     Stopwatch shape_watch;
 #pragma omp for schedule(dynamic, 256) nowait
     for (LocalIndex p = 0; p < np; ++p) {
-      if (points.eroded[p] && count_[p] == 0) continue;
+      if (points.debris(p) && count_[p] == 0) continue;
       const LocalIndex c = p / chunk;
       const Index first = conn.offset[p];
       const auto n = static_cast<std::size_t>(count_[p]);
       const LocalIndex* row = scratch_[static_cast<std::size_t>(chunk_thread_[c])].rows.data() + chunk_start_[c] +
                               (first - conn.offset[c * chunk]);
       std::copy_n(row, n, conn.node.begin() + first);
-      if (points.eroded[p]) {
+      if (points.debris(p)) {
         carryDebris(model, p, first, n, s);
         continue;
       }

@@ -182,15 +182,20 @@ TEST(RearWall, PerforationSpallAndNone) {
   {
     PlateModel m = plateModel();
     erodeWhere(m.model, m.plate, [](const Vec3& x) { return x.head<2>().norm() < 3 * mm; });
-    // Three of the eroded points are debris the wall has caught (and one another body carries).
+    // Debris of another body: three points the wall has caught, one another body carries, and
+    // one still flying.
+    const int cloud = addCloud(m.model, "debris",
+                               {Vec3(5 * mm, 0, -1 * mm), Vec3(6 * mm, 0, -1 * mm), Vec3(7 * mm, 0, -1 * mm),
+                                Vec3(8 * mm, 0, 1 * mm), Vec3(9 * mm, 0, 1 * mm)},
+                               1e-9);
     PointStore& points = m.model.points;
     double carried = 0.0;
-    int marked = 0;
-    for (LocalIndex p = 0; p < points.owned && marked < 4; ++p) {
-      if (!points.eroded[p]) continue;
-      points.carrier[p] = marked < 3 ? m.plate : m.plate + 1;
-      carried += marked < 3 ? points.mass[p] : 0.0;
-      ++marked;
+    const BodyInfo& debris = m.model.bodies[cloud];
+    for (LocalIndex p = debris.point_begin; p < debris.point_end; ++p) {
+      const LocalIndex k = p - debris.point_begin;
+      points.eroded[p] = 1;
+      points.carrier[p] = k < 3 ? m.plate : k == 3 ? cloud + 1 : -1;
+      carried += k < 3 ? points.mass[p] : 0.0;
     }
     const RearWallDamage d = measureRearWall(m.model, findFragments(m.model, {}, {}), m.geometry);
     EXPECT_DOUBLE_EQ(d.debris_carried, carried);
