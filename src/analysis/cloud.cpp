@@ -38,25 +38,46 @@ std::vector<CloudSample> cloudSamples(const otm::Model& model, const std::vector
   return samples;
 }
 
+// The mass-weighted q-quantile of values (sorted with their weights).
+double weightedQuantile(std::vector<std::pair<double, double>>& values, double q) {
+  std::sort(values.begin(), values.end());
+  double total = 0.0;
+  for (const auto& v : values) total += v.second;
+  double cumulative = 0.0;
+  for (const auto& [value, weight] : values) {
+    cumulative += weight;
+    if (cumulative >= q * total) return value;
+  }
+  return values.back().first;
+}
+
 CloudMeasurement measureCloud(const std::vector<CloudSample>& samples, const Vec3& origin, const Vec3& e,
                               const Vec3& normal) {
   CloudMeasurement cloud;
   if (samples.empty()) return cloud;
   double lo = std::numeric_limits<double>::infinity();
   double hi = -lo;
+  std::vector<std::pair<double, double>> axial_mass, radial_mass;
   for (const CloudSample& s : samples) {
     const Vec3 d = s.x - origin;
     const double axial = e.dot(d);
+    const double radial = (d - axial * e).norm();
     cloud.mass += s.mass;
     cloud.points += s.simulated;
     lo = std::min(lo, axial);
     hi = std::max(hi, axial);
-    cloud.max_radius = std::max(cloud.max_radius, (d - axial * e).norm());
+    cloud.max_radius = std::max(cloud.max_radius, radial);
+    axial_mass.emplace_back(axial, s.mass);
+    radial_mass.emplace_back(radial, s.mass);
   }
   cloud.leading_edge = hi;
   cloud.length = hi - lo;
   cloud.width = 2.0 * cloud.max_radius;
   cloud.length_to_width = cloud.width > 0.0 ? cloud.length / cloud.width : 0.0;
+  cloud.bulk_leading_edge = weightedQuantile(axial_mass, 0.95);
+  cloud.bulk_radius = weightedQuantile(radial_mass, 0.95);
+  const double bulk_length = cloud.bulk_leading_edge - weightedQuantile(axial_mass, 0.05);
+  cloud.bulk_length_to_width = cloud.bulk_radius > 0.0 ? bulk_length / (2.0 * cloud.bulk_radius) : 0.0;
   // The front: the leading tenth of the cloud's length, whose mass centre gives the direction
   // the cloud travels (Piekutowski's "leading edge" of the debris cloud).
   const double front_start = hi - 0.1 * cloud.length;
@@ -74,19 +95,6 @@ CloudMeasurement measureCloud(const std::vector<CloudSample>& samples, const Vec
     cloud.front_normal_angle = angleBetween(front, normal);
   }
   return cloud;
-}
-
-// The mass-weighted q-quantile of values (sorted with their weights).
-double weightedQuantile(std::vector<std::pair<double, double>>& values, double q) {
-  std::sort(values.begin(), values.end());
-  double total = 0.0;
-  for (const auto& v : values) total += v.second;
-  double cumulative = 0.0;
-  for (const auto& [value, weight] : values) {
-    cumulative += weight;
-    if (cumulative >= q * total) return value;
-  }
-  return values.back().first;
 }
 
 }  // namespace

@@ -77,9 +77,14 @@ struct CloudMeasurement {
   double length = 0.0;        // m, axial extent
   double width = 0.0;         // m, 2 max_radius
   double length_to_width = 0.0;
-  Vec3 front_centre = Vec3::Zero();  // mass centre of the leading 10 % of the length
-  double front_deflection = 0.0;     // rad, angle of the front centre from the shot line
-  double front_normal_angle = 0.0;   // rad, angle of the front centre from the plate normal
+  // The bulk of the cloud, 95 % of its mass: a few fast points (the jetting rim of the contact,
+  // a shocked point's velocity noise) set the extremes above.
+  double bulk_leading_edge = 0.0;     // m, axial distance that 95 % of the mass lies behind
+  double bulk_radius = 0.0;           // m, distance from the shot line within which 95 % lies
+  double bulk_length_to_width = 0.0;  // (5 % to 95 % axial extent) / (2 bulk_radius)
+  Vec3 front_centre = Vec3::Zero();   // mass centre of the leading 10 % of the length
+  double front_deflection = 0.0;      // rad, angle of the front centre from the shot line
+  double front_normal_angle = 0.0;    // rad, angle of the front centre from the plate normal
 };
 
 // One cloud per projectile body and for the reference plate's body, then "all" of them.

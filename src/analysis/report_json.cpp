@@ -98,6 +98,9 @@ json cloudJson(const CloudMeasurement& c) {
           {"length_m", c.length},
           {"width_m", c.width},
           {"length_to_width", c.length_to_width},
+          {"bulk_leading_edge_m", c.bulk_leading_edge},
+          {"bulk_radius_m", c.bulk_radius},
+          {"bulk_length_to_width", c.bulk_length_to_width},
           {"front_centre_m", vec(c.front_centre)},
           {"front_deflection_deg", c.front_deflection * deg},
           {"front_normal_angle_deg", c.front_normal_angle * deg}};

@@ -40,6 +40,8 @@ std::string formatReport(const Report& r) {
                           "from the shot line, {:.3f} g",
                           c.name, c.leading_edge * mm, c.max_radius * mm, c.length_to_width, c.front_deflection * deg,
                           c.mass * 1e3));
+    line(out, fmt::format("  {:<20} 95% of its mass: leading edge {:.1f} mm, radius {:.1f} mm, L/W {:.2f}", "",
+                          c.bulk_leading_edge * mm, c.bulk_radius * mm, c.bulk_length_to_width));
   }
   if (r.ejecta.points > 0) {
     line(out, fmt::format("  back-splash          height {:.1f} mm, cone {:.0f}-{:.0f} deg from the normal, {:.3f} g",
@@ -48,11 +50,10 @@ std::string formatReport(const Report& r) {
   }
   if (r.rear_wall) {
     const RearWallDamage& w = *r.rear_wall;
-    line(out,
-         fmt::format("  rear wall {:<10} {}: {} perforation(s), {} detached spall fragment(s) ({:.3f} g); "
-                     "carries {:.3f} g of debris",
-                     r.body_names[w.body], w.classification, w.perforations, w.spall_fragments, w.spall_mass * 1e3,
-                     w.debris_carried * 1e3));
+    line(out, fmt::format("  rear wall {:<10} {}: {} perforation(s), {} detached spall fragment(s) ({:.3f} g); "
+                          "carries {:.3f} g of debris",
+                          r.body_names[w.body], w.classification, w.perforations, w.spall_fragments, w.spall_mass * 1e3,
+                          w.debris_carried * 1e3));
   }
   if (r.shield) {
     const ShieldComparison& s = *r.shield;

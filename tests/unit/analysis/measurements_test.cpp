@@ -150,6 +150,23 @@ TEST(Cloud, LeadingEdgeRadiusAndRatioAreExact) {
   EXPECT_EQ(clouds[2].points, 3);
 }
 
+// The bulk measures take 95 % of the mass: one far outlier sets the extremes but not them.
+TEST(Cloud, BulkMeasuresIgnoreAFewFastPoints) {
+  PlateModel m = plateModel();
+  std::vector<Vec3> x;
+  for (int k = 1; k <= 109; ++k) x.emplace_back(0.1 * k * mm, 0, -2 * mm - k * mm);  // xi = k mm, r = k/10 mm
+  x.emplace_back(300 * mm, 0, -502 * mm);                                            // xi = 500 mm, r = 300 mm
+  const int debris = addCloud(m.model, "projectile", x, 1e-9);
+  m.geometry.projectile_bodies = {debris};
+  const CloudMeasurement c = measureClouds(m.model, m.geometry)[0];
+  EXPECT_NEAR(c.leading_edge, 500 * mm, 1e-12);
+  EXPECT_NEAR(c.max_radius, 300 * mm, 1e-12);
+  // 110 equal masses: 95 % of the mass is reached at the 105th value (104.5), 5 % at the 6th (5.5).
+  EXPECT_NEAR(c.bulk_leading_edge, 105 * mm, 1e-12);
+  EXPECT_NEAR(c.bulk_radius, 10.5 * mm, 1e-12);
+  EXPECT_NEAR(c.bulk_length_to_width, (105.0 - 6.0) / (2 * 10.5), 1e-9);
+}
+
 TEST(Cloud, ObliqueFrontDeflection) {
   PlateModel m = plateModel();
   const Vec3 shot(std::sin(30 * deg), 0, -std::cos(30 * deg));
