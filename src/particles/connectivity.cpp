@@ -10,6 +10,22 @@ namespace kessler {
 // contiguous block of points (so of entries), counts its entries per node, and writes them after
 // those of threads 0..t-1 for the same node. Scanning each block in entry order keeps every
 // node's list sorted by point, whatever the thread count.
+namespace {
+
+template <class T>
+void resizeWithHeadroom(std::vector<T>& v, std::size_t n) {
+  if (n > v.capacity()) v.reserve(n + n / 8);
+  v.resize(n);
+}
+
+}  // namespace
+
+void Connectivity::resizeRows(std::size_t entries) {
+  resizeWithHeadroom(node, entries);
+  resizeWithHeadroom(N, entries);
+  resizeWithHeadroom(dN, entries);
+}
+
 void Connectivity::buildTranspose(LocalIndex node_count) {
   std::vector<Index> scratch;
   buildTranspose(node_count, scratch);
@@ -18,8 +34,8 @@ void Connectivity::buildTranspose(LocalIndex node_count) {
 void Connectivity::buildTranspose(LocalIndex node_count, std::vector<Index>& scratch) {
   const LocalIndex np = points();
   const Index entries = offset.empty() ? 0 : offset.back();
-  entry_point.resize(static_cast<std::size_t>(entries));
-  node_entry.resize(static_cast<std::size_t>(entries));
+  resizeWithHeadroom(entry_point, static_cast<std::size_t>(entries));
+  resizeWithHeadroom(node_entry, static_cast<std::size_t>(entries));
   node_offset.assign(static_cast<std::size_t>(node_count) + 1, 0);
   const int threads = omp_get_max_threads();
   scratch.resize(static_cast<std::size_t>(threads) * static_cast<std::size_t>(node_count));

@@ -364,9 +364,7 @@ void Neighbourhoods::update(Model& model) {
     {
       for (LocalIndex p = 0; p < np; ++p) conn.offset[p + 1] = conn.offset[p] + count_[p];
       const auto entries = static_cast<std::size_t>(conn.offset[np]);
-      conn.node.resize(entries);
-      conn.N.resize(entries);
-      conn.dN.resize(entries);
+      conn.resizeRows(entries);
     }
     // Each point's row and shape functions depend on nothing but the point, so any schedule gives
     // the same result: dynamic, since the cost varies (debris costs nothing, contact rows
