@@ -1,8 +1,11 @@
 #include "particles/connectivity.hpp"
 
+#include "core/error.hpp"
+
 #include <omp.h>
 
 #include <algorithm>
+#include <limits>
 
 namespace kessler {
 
@@ -34,8 +37,10 @@ void Connectivity::buildTranspose(LocalIndex node_count) {
 void Connectivity::buildTranspose(LocalIndex node_count, std::vector<Index>& scratch) {
   const LocalIndex np = points();
   const Index entries = offset.empty() ? 0 : offset.back();
-  resizeWithHeadroom(entry_point, static_cast<std::size_t>(entries));
+  KESSLER_VERIFY(entries <= Index{std::numeric_limits<std::uint32_t>::max()},
+                 "{} point-node entries on one rank: more than the transpose's 32-bit indices hold", entries);
   resizeWithHeadroom(node_entry, static_cast<std::size_t>(entries));
+  resizeWithHeadroom(node_point, static_cast<std::size_t>(entries));
   node_offset.assign(static_cast<std::size_t>(node_count) + 1, 0);
   const int threads = omp_get_max_threads();
   scratch.resize(static_cast<std::size_t>(threads) * static_cast<std::size_t>(node_count));
@@ -48,12 +53,9 @@ void Connectivity::buildTranspose(LocalIndex node_count, std::vector<Index>& scr
     Index* count = scratch.data() + static_cast<std::size_t>(t) * static_cast<std::size_t>(node_count);
     std::fill(count, count + node_count, Index{0});
     for (LocalIndex p = begin; p < end; ++p)
-      for (Index k = offset[p]; k < offset[p + 1]; ++k) {
-        entry_point[k] = p;
-        ++count[node[k]];
-      }
+      for (Index k = offset[p]; k < offset[p + 1]; ++k) ++count[node[k]];
 #pragma omp barrier
-    // Node a's entries: those of thread 0, then thread 1, ...; the offsets by nodes in parallel.
+        // Node a's entries: those of thread 0, then thread 1, ...; the offsets by nodes in parallel.
 #pragma omp for schedule(static)
     for (LocalIndex a = 0; a < node_count; ++a) {
       Index total = 0;
@@ -73,7 +75,11 @@ void Connectivity::buildTranspose(LocalIndex node_count, std::vector<Index>& scr
       }
     }
     for (LocalIndex p = begin; p < end; ++p)
-      for (Index k = offset[p]; k < offset[p + 1]; ++k) node_entry[count[node[k]]++] = k;
+      for (Index k = offset[p]; k < offset[p + 1]; ++k) {
+        const Index slot = count[node[k]]++;
+        node_entry[slot] = static_cast<std::uint32_t>(k);
+        node_point[slot] = p;
+      }
   }
 }
 

@@ -24,6 +24,9 @@ class CellList {
   // positions of a cell are indexAt(s) for s in [cellBegin(cell), cellEnd(cell)).
   template <typename F>
   void forEachCellNear(const Vec3& q, double radius, F&& f) const;
+  // Calls f(neighbour) for the cell itself and the up to 26 cells around it.
+  template <typename F>
+  void forEachCellAround(long cell, F&& f) const;
   long cellCount() const { return static_cast<long>(start_.size()) - 1; }
   LocalIndex cellBegin(long cell) const { return start_[static_cast<std::size_t>(cell)]; }
   LocalIndex cellEnd(long cell) const { return start_[static_cast<std::size_t>(cell) + 1]; }
@@ -66,14 +69,34 @@ void CellList::forEachCellNear(const Vec3& q, double radius, F&& f) const {
 }
 
 template <typename F>
+void CellList::forEachCellAround(long cell, F&& f) const {
+  const int i0 = static_cast<int>(cell % dims_[0]);
+  const int j0 = static_cast<int>(cell / dims_[0] % dims_[1]);
+  const int k0 = static_cast<int>(cell / (static_cast<long>(dims_[0]) * dims_[1]));
+  for (int k = std::max(k0 - 1, 0); k <= std::min(k0 + 1, dims_[2] - 1); ++k)
+    for (int j = std::max(j0 - 1, 0); j <= std::min(j0 + 1, dims_[1] - 1); ++j)
+      for (int i = std::max(i0 - 1, 0); i <= std::min(i0 + 1, dims_[0] - 1); ++i) f(flat(i, j, k));
+}
+
+template <typename F>
 void CellList::forEachWithin(const Vec3& q, double radius, F&& f) const {
   const double r2 = radius * radius;
-  forEachCellNear(q, radius, [&](long c) {
-    for (LocalIndex s = start_[c]; s < start_[c + 1]; ++s) {
-      const double d2 = (sorted_x_[s] - q).squaredNorm();
-      if (d2 <= r2) f(sorted_[s], d2);
+  std::array<int, 3> lo = cellOf(q - Vec3::Constant(radius));
+  std::array<int, 3> hi = cellOf(q + Vec3::Constant(radius));
+  for (int d = 0; d < 3; ++d) {
+    lo[d] = std::max(lo[d], 0);
+    hi[d] = std::min(hi[d], dims_[d] - 1);
+    if (lo[d] > hi[d]) return;
+  }
+  // The cells of a row along x are consecutive, so are their positions: one loop per row.
+  for (int k = lo[2]; k <= hi[2]; ++k)
+    for (int j = lo[1]; j <= hi[1]; ++j) {
+      const LocalIndex end = start_[flat(hi[0], j, k) + 1];
+      for (LocalIndex s = start_[flat(lo[0], j, k)]; s < end; ++s) {
+        const double d2 = (sorted_x_[s] - q).squaredNorm();
+        if (d2 <= r2) f(sorted_[s], d2);
+      }
     }
-  });
 }
 
 }  // namespace kessler

@@ -55,7 +55,7 @@ double catchDebris(Model& model, std::span<const LocalIndex> caught) {
       double weight = 0.0;
       for (Index k = conn.node_offset[a]; k < conn.node_offset[a + 1]; ++k) {
         const Index f = conn.node_entry[k];
-        const LocalIndex q = conn.entry_point[f];
+        const LocalIndex q = conn.node_point[k];
         if (!points.debris(q)) weight += conn.N[f] * points.mass[q];
       }
       if (!(weight > 0.0)) {
@@ -64,7 +64,7 @@ double catchDebris(Model& model, std::span<const LocalIndex> caught) {
       }
       for (Index k = conn.node_offset[a]; k < conn.node_offset[a + 1]; ++k) {
         const Index f = conn.node_entry[k];
-        const LocalIndex q = conn.entry_point[f];
+        const LocalIndex q = conn.node_point[k];
         if (points.debris(q)) continue;
         heat += kinetic(q);
         points.v[q] += (conn.N[f] / weight) * share;

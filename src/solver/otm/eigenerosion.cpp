@@ -51,26 +51,30 @@ LocalIndex Eigenerosion::apply(Model& model) {
     for (LocalIndex s = cells_.cellBegin(cell); s < cells_.cellEnd(cell); ++s)
       cell_max_[cell] = std::max(cell_max_[cell], points.strain_energy[candidate_[cells_.indexAt(s)]]);
 
+  // And the largest W around each cell: a ball no wider than a cell lies in the cells around its
+  // centre's, so one lookup bounds it.
+  cell_bound_.assign(static_cast<std::size_t>(cells), 0.0);
+#pragma omp parallel for schedule(static)
+  for (long cell = 0; cell < cells; ++cell)
+    cells_.forEachCellAround(cell,
+                             [&](long near) { cell_bound_[cell] = std::max(cell_bound_[cell], cell_max_[near]); });
+
   erode_.assign(static_cast<std::size_t>(np), 0);
-#pragma omp parallel for schedule(dynamic, 256)
-  for (LocalIndex c = 0; c < count; ++c) {
-    const LocalIndex p = candidate_[c];
-    const int body = points.body[p];
-    const double eps = settings_.erosion_radius * points.spacing(p);
-    double bound = 0.0;
-    cells_.forEachCellNear(points.x[p], eps, [&](long cell) { bound = std::max(bound, cell_max_[cell]); });
-    // The margin covers the rounding of the weighted mean below.
-    if (erosionCalibration(eps, nu[body]) * bound * (1.0 + 1e-12) < gc[body]) continue;
-    double mass = 0.0, energy = 0.0;
-    cells_.forEachWithin(points.x[p], eps, [&](LocalIndex k, double) {
-      const LocalIndex q = candidate_[k];
-      if (points.body[q] != body) return;
-      mass += points.mass[q];
-      energy += points.mass[q] * points.strain_energy[q];
-    });
-    const double release_rate = erosionCalibration(eps, nu[body]) * energy / mass;
-    if (release_rate >= gc[body]) erode_[p] = 1;
-  }
+#pragma omp parallel for schedule(dynamic, 64)
+  for (long cell = 0; cell < cells; ++cell)
+    for (LocalIndex slot = cells_.cellBegin(cell); slot < cells_.cellEnd(cell); ++slot) {
+      const LocalIndex p = candidate_[cells_.indexAt(slot)];
+      const int body = points.body[p];
+      const double eps = settings_.erosion_radius * points.spacing(p);
+      double bound = cell_bound_[cell];
+      if (eps > cells_.cellSize()) {
+        bound = 0.0;
+        cells_.forEachCellNear(points.x[p], eps, [&](long near) { bound = std::max(bound, cell_max_[near]); });
+      }
+      // The margin covers the rounding of the weighted mean below.
+      if (erosionCalibration(eps, nu[body]) * bound * (1.0 + 1e-12) < gc[body]) continue;
+      erode_[p] = releaseRate(points, p, eps, nu[body]) >= gc[body];
+    }
   LocalIndex failed = 0;
   for (LocalIndex p = 0; p < np; ++p) {
     if (!erode_[p]) continue;
@@ -83,6 +87,18 @@ LocalIndex Eigenerosion::apply(Model& model) {
     ++failed;
   }
   return failed;
+}
+
+double Eigenerosion::releaseRate(const PointStore& points, LocalIndex p, double eps, double nu) const {
+  const int body = points.body[p];
+  double mass = 0.0, energy = 0.0;
+  cells_.forEachWithin(points.x[p], eps, [&](LocalIndex k, double) {
+    const LocalIndex q = candidate_[k];
+    if (points.body[q] != body) return;
+    mass += points.mass[q];
+    energy += points.mass[q] * points.strain_energy[q];
+  });
+  return erosionCalibration(eps, nu) * energy / mass;
 }
 
 }  // namespace kessler::otm

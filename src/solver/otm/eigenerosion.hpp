@@ -31,11 +31,14 @@ class Eigenerosion {
   bool active(const Model& model) const;
 
  private:
+  // G_p over the ball of radius eps (intact points of p's body).
+  double releaseRate(const PointStore& points, LocalIndex p, double eps, double nu) const;
   Settings settings_;
   CellList cells_;                     // over the candidates only (candidate_x_)
   std::vector<Vec3> candidate_x_;      // intact points of eroding bodies ...
   std::vector<LocalIndex> candidate_;  // ... and their point indices, in point order
   std::vector<double> cell_max_;       // largest W of the candidates in each cell
+  std::vector<double> cell_bound_;     // ... and in the cells around it
   std::vector<std::uint8_t> erode_;
 };
 

@@ -201,7 +201,7 @@ void Integrator::averageVolumeChange() {
     double m = 0.0, mj = 0.0;
     for (Index k = conn.node_offset[a]; k < conn.node_offset[a + 1]; ++k) {
       const Index e = conn.node_entry[k];
-      const LocalIndex p = conn.entry_point[e];
+      const LocalIndex p = conn.node_point[k];
       if (points.debris(p)) continue;
       const double w = conn.N[e] * points.mass[p];
       m += w;

@@ -24,7 +24,7 @@ void assembleNodes(const Connectivity& conn, const PointStore& points, NodeStore
       Vec3 l = Vec3::Zero(), f = Vec3::Zero();
       for (Index k = conn.node_offset[a]; k < conn.node_offset[a + 1]; ++k) {
         const Index e = conn.node_entry[k];
-        const PointLoad& load = loads[conn.entry_point[e]];
+        const PointLoad& load = loads[conn.node_point[k]];
         const double N = conn.N[e];
         m += N * load.mass;
         l += N * load.momentum;

@@ -2,6 +2,7 @@
 
 #include "approx/lme.hpp"
 #include "core/error.hpp"
+#include "core/reduce.hpp"
 #include "core/timer.hpp"
 #include "solver/otm/debris.hpp"
 
@@ -92,15 +93,25 @@ int Neighbourhoods::gather(const Model& model, LocalIndex p, double scale, bool 
   const double contact2 = settings_.contact_distance * settings_.contact_distance * h * h;
   double radius = scale * lme::cutoffRadius(settings_.lme_gamma, h, settings_.lme_tolerance);
   for (int attempt = 0;; ++attempt) {
-    s.candidates.clear();
-    cells_.forEachWithin(points.x[p], radius, [&](LocalIndex a, double d2) { s.candidates.emplace_back(a, d2); });
-    // Seizing contact: another body's nodes count only once that body is close enough.
+    // Seizing contact: another body's nodes count only once that body is close enough, so they
+    // are dropped again below unless their body's nearest node lies within the contact distance.
     std::fill(s.nearest_foreign.begin(), s.nearest_foreign.end(), std::numeric_limits<double>::infinity());
-    for (const auto& [a, d2] : s.candidates)
-      if (nodes.body[a] != own) s.nearest_foreign[nodes.body[a]] = std::min(s.nearest_foreign[nodes.body[a]], d2);
+    bool foreign = false;
     s.node.clear();
-    for (const auto& [a, d2] : s.candidates)
-      if (nodes.body[a] == own || s.nearest_foreign[nodes.body[a]] <= contact2) s.node.push_back(a);
+    cells_.forEachWithin(points.x[p], radius, [&](LocalIndex a, double d2) {
+      const int b = nodes.body[a];
+      if (b != own) {
+        foreign = true;
+        s.nearest_foreign[b] = std::min(s.nearest_foreign[b], d2);
+      }
+      s.node.push_back(a);
+    });
+    if (foreign)
+      s.node.erase(std::remove_if(s.node.begin(), s.node.end(),
+                                  [&](LocalIndex a) {
+                                    return nodes.body[a] != own && s.nearest_foreign[nodes.body[a]] > contact2;
+                                  }),
+                   s.node.end());
     s.visible = s.node.size();
     if (s.touching.size() == model.bodies.size())
       for (std::size_t b = 0; b < s.touching.size(); ++b)
@@ -294,24 +305,28 @@ void Neighbourhoods::update(Model& model) {
   // Cells of the mean cut-off radius of the intact points: a query with a larger radius visits more
   // cells, so this is only about cost. The largest radius would let a few strongly expanded points
   // (release waves, spall) make the cells, and so every query, far too large.
-  double radius_sum = 0.0;
-  LocalIndex intact = 0;
   // And the mean spacing of each body's intact points: the support a debris point takes among its
-  // nodes (a fine debris cloud caught by a coarse wall needs the wall's node spacing).
+  // nodes (a fine debris cloud caught by a coarse wall needs the wall's node spacing). Bodies are
+  // contiguous ranges of points; their sums are deterministic whatever the thread count.
   const std::size_t bodies = model.bodies.size();
   body_spacing_.assign(bodies, 0.0);
   body_points_.assign(bodies, 0);
-  for (LocalIndex p = 0; p < np; ++p) {
-    if (points.eroded[p]) continue;
-    const double h = points.spacing(p);
-    radius_sum += lme::cutoffRadius(settings_.lme_gamma, h, settings_.lme_tolerance);
-    ++intact;
-    body_spacing_[static_cast<std::size_t>(points.body[p])] += h;
-    ++body_points_[static_cast<std::size_t>(points.body[p])];
+  double spacing_sum = 0.0;
+  LocalIndex intact = 0;
+  for (std::size_t b = 0; b < bodies; ++b) {
+    const LocalIndex begin = model.bodies[b].point_begin, end = std::min(model.bodies[b].point_end, np);
+    const Eigen::Vector2d sum =
+        deterministicSum(std::max(end - begin, 0), Eigen::Vector2d(Eigen::Vector2d::Zero()), [&](LocalIndex i) {
+          const LocalIndex p = begin + i;
+          return points.eroded[p] ? Eigen::Vector2d(0.0, 0.0) : Eigen::Vector2d(points.spacing(p), 1.0);
+        });
+    spacing_sum += sum[0];
+    intact += static_cast<LocalIndex>(sum[1]);
+    body_points_[b] = static_cast<LocalIndex>(sum[1]);
+    if (body_points_[b] > 0) body_spacing_[b] = sum[0] / sum[1];
   }
-  for (std::size_t b = 0; b < bodies; ++b)
-    if (body_points_[b] > 0) body_spacing_[b] /= body_points_[b];
-  const double cell_size = intact > 0 ? radius_sum / intact : 1.0;
+  const double cell_size =
+      intact > 0 ? lme::cutoffRadius(settings_.lme_gamma, spacing_sum / intact, settings_.lme_tolerance) : 1.0;
   cells_.build(nodes.x, nodes.size(), std::max(cell_size, 1e-300));
   if (settings_.crack_visibility) buildOccluders(model, cell_size);
 

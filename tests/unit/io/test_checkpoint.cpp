@@ -75,7 +75,7 @@ long differences(const otm::Model& a, const otm::Model& b) {
          differing(a.connectivity.dN, b.connectivity.dN) +
          differing(a.connectivity.node_offset, b.connectivity.node_offset) +
          differing(a.connectivity.node_entry, b.connectivity.node_entry) +
-         differing(a.connectivity.entry_point, b.connectivity.entry_point);
+         differing(a.connectivity.node_point, b.connectivity.node_point);
 }
 
 class CheckpointTest : public ::testing::Test {

@@ -28,10 +28,10 @@ TEST(Connectivity, TransposeListsEveryEntryInPointOrder) {
     for (Index k = c.node_offset[a]; k < c.node_offset[a + 1]; ++k) {
       const Index e = c.node_entry[k];
       EXPECT_EQ(c.node[e], a);
-      EXPECT_GE(c.entry_point[e], previous);
-      EXPECT_GE(e, c.offset[c.entry_point[e]]);
-      EXPECT_LT(e, c.offset[c.entry_point[e] + 1]);
-      previous = c.entry_point[e];
+      EXPECT_GE(c.node_point[k], previous);
+      EXPECT_GE(e, c.offset[c.node_point[k]]);
+      EXPECT_LT(e, c.offset[c.node_point[k] + 1]);
+      previous = c.node_point[k];
       ++seen[e];
     }
   }
@@ -58,7 +58,7 @@ TEST(Connectivity, TransposeDoesNotDependOnTheThreadCount) {
     c.buildTranspose(100);
     EXPECT_EQ(c.node_offset, one.node_offset) << t << " threads";
     EXPECT_EQ(c.node_entry, one.node_entry) << t << " threads";
-    EXPECT_EQ(c.entry_point, one.entry_point) << t << " threads";
+    EXPECT_EQ(c.node_point, one.node_point) << t << " threads";
   }
   omp_set_num_threads(threads);
 }
