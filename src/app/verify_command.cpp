@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <limits>
 #include <memory>
 
 namespace kessler::app {
@@ -37,10 +38,15 @@ std::vector<const verify::Problem*> select(const std::vector<std::string>& names
 }
 
 nlohmann::json toJson(const verify::Outcome& o) {
-  return {{"name", o.name},           {"quantity", o.quantity},   {"measured", o.measured},
-          {"reference", o.reference}, {"error", o.error},
+  return {{"name", o.name},
+          {"quantity", o.quantity},
+          {"measured", o.measured},
+          {"reference", o.reference},
+          {"error", o.error},
           {"error_kind", o.comparison == verify::Comparison::relative ? "relative" : "absolute"},
-          {"tolerance", o.tolerance}, {"passed", o.passed},       {"seconds", o.seconds},
+          {"tolerance", o.tolerance},
+          {"passed", o.passed},
+          {"seconds", o.seconds},
           {"note", o.note}};
 }
 
@@ -56,7 +62,17 @@ void runVerify(const VerifyOptions& options) {
   int failed = 0;
   for (const verify::Problem* p : chosen) {
     Stopwatch watch;
-    verify::Outcome o = p->run();
+    verify::Outcome o;
+    try {
+      o = p->run();
+    } catch (const NumericalError& e) {
+      // A problem whose run breaks down has failed; the others still run and report.
+      o.name = p->name;
+      o.quantity = "run failed";
+      o.measured = o.reference = o.error = o.tolerance = std::numeric_limits<double>::quiet_NaN();
+      o.passed = false;
+      o.note = e.what();
+    }
     o.seconds = watch.seconds();
     failed += !o.passed;
     if (options.json) {

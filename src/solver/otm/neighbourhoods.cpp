@@ -178,11 +178,13 @@ int Neighbourhoods::gatherDebris(const Model& model, LocalIndex p, Scratch& s) c
 }
 
 lme::Result Neighbourhoods::shapeFunctionsAt(Model& model, LocalIndex p, std::span<const LocalIndex> row,
-                                             std::span<double> N, std::span<Vec3> dN, Scratch& s, double h) const {
+                                             std::span<double> N, std::span<Vec3> dN, Scratch& s, double h,
+                                             double gamma_scale) const {
   const PointStore& points = model.points;
   s.offsets.resize(row.size());
   for (std::size_t i = 0; i < row.size(); ++i) s.offsets[i] = points.x[p] - model.nodes.x[row[i]];
-  return lme::shapeFunctions(s.offsets, lme::beta(settings_.lme_gamma, h), h, model.points.lambda[p], N, dN);
+  return lme::shapeFunctions(s.offsets, lme::beta(gamma_scale * settings_.lme_gamma, h), h, model.points.lambda[p], N,
+                             dN);
 }
 
 void Neighbourhoods::carryDebris(Model& model, LocalIndex p, Index first, std::size_t n, Scratch& s) const {
@@ -206,8 +208,9 @@ void Neighbourhoods::carryDebris(Model& model, LocalIndex p, Index first, std::s
 }
 
 // A point near a strongly compressed or re-entrant surface can fall outside the hull of the nodes
-// within its cut-off: it is retried from lambda = 0 with radii 1.5, 2.25 and 3.375 times larger,
-// before the run stops (without the visibility test); a failed point is released instead. Rare,
+// within its cut-off: it is retried from lambda = 0 with radii 1.5, 2.25 and 3.375 times larger and
+// gamma 1, 1/2 and 1/4 times the settings', before the run stops (without the visibility test); a
+// failed point is released instead. Rare,
 // so the connectivity is then rebuilt with the retried rows.
 void Neighbourhoods::retryFailedPoints(Model& model) {
   PointStore& points = model.points;
@@ -235,8 +238,12 @@ void Neighbourhoods::retryFailedPoints(Model& model) {
       s.N.resize(start[k] + size);
       s.dN.resize(start[k] + size);
       points.lambda[p].setZero();  // the warm start may be what failed
+      // Smoother shape functions too (gamma halved at each attempt): a point squeezed into a layer
+      // of nodes (against a rigid wall, say) sees the nodes beyond the layer with weights
+      // exp(-gamma (d/h)^2) that vanish at gamma = 4, and its covariance turns singular.
       r = shapeFunctionsAt(model, p, s.node, std::span<double>(s.N.data() + start[k], size),
-                           std::span<Vec3>(s.dN.data() + start[k], size), s, points.spacing(p));
+                           std::span<Vec3>(s.dN.data() + start[k], size), s, points.spacing(p),
+                           std::pow(0.5, attempt - 1));
       if (r.status == lme::Status::converged) break;
     }
     s.rows.insert(s.rows.end(), s.node.begin(), s.node.begin() + n);

@@ -67,9 +67,9 @@ class Neighbourhoods {
   // them (debris further away hides nothing).
   void buildOccluders(const Model& model, double reach);
   // LME shape functions of point p over the nodes `row` (warm-started from its lambda), with
-  // support size h.
+  // support size h and locality gamma_scale times the settings' gamma.
   lme::Result shapeFunctionsAt(Model& model, LocalIndex p, std::span<const LocalIndex> row, std::span<double> N,
-                               std::span<Vec3> dN, Scratch& s, double h) const;
+                               std::span<Vec3> dN, Scratch& s, double h, double gamma_scale = 1.0) const;
   // The support size of debris point p among the nodes of `body`: its own spacing, or the body's
   // mean spacing if larger.
   double debrisSpacing(const PointStore& points, LocalIndex p, int body) const;
