@@ -49,8 +49,10 @@ void CellList::build(const std::vector<Vec3>& x, LocalIndex count, double cell_s
   cursor_.assign(start_.begin(), start_.end() - 1);
   for (LocalIndex a = 0; a < count; ++a) sorted_[cursor_[cell_of[a]]++] = a;
   // Positions in cell order: a query streams through them instead of jumping through x.
-  sorted_x_.resize(static_cast<std::size_t>(count));
-  for (LocalIndex s = 0; s < count; ++s) sorted_x_[s] = x[sorted_[s]];
+  for (int d = 0; d < 3; ++d) {
+    sorted_x_[d].resize(static_cast<std::size_t>(count));
+    for (LocalIndex s = 0; s < count; ++s) sorted_x_[d][s] = x[sorted_[s]][d];
+  }
 }
 
 }  // namespace kessler

@@ -43,7 +43,9 @@ class CellList {
   std::array<int, 3> dims_{1, 1, 1};
   std::vector<LocalIndex> start_;   // size cells+1
   std::vector<LocalIndex> sorted_;  // position indices grouped by cell
-  std::vector<Vec3> sorted_x_;      // their positions, in the same order
+  // Their coordinates, in the same order and one array each, so that the distances of a run of
+  // positions are computed four or eight at a time.
+  std::array<std::vector<double>, 3> sorted_x_;
   std::vector<long> cell_of_;       // build scratch, kept so that rebuilding does not allocate
   std::vector<LocalIndex> cursor_;  // build scratch
 };
@@ -88,13 +90,22 @@ void CellList::forEachWithin(const Vec3& q, double radius, F&& f) const {
     hi[d] = std::min(hi[d], dims_[d] - 1);
     if (lo[d] > hi[d]) return;
   }
-  // The cells of a row along x are consecutive, so are their positions: one loop per row.
+  // The cells of a row along x are consecutive, so are their positions: one loop per row, the
+  // distances first (vectorised), then the calls.
+  constexpr int chunk = 64;
   for (int k = lo[2]; k <= hi[2]; ++k)
     for (int j = lo[1]; j <= hi[1]; ++j) {
       const LocalIndex end = start_[flat(hi[0], j, k) + 1];
-      for (LocalIndex s = start_[flat(lo[0], j, k)]; s < end; ++s) {
-        const double d2 = (sorted_x_[s] - q).squaredNorm();
-        if (d2 <= r2) f(sorted_[s], d2);
+      for (LocalIndex begin = start_[flat(lo[0], j, k)]; begin < end; begin += chunk) {
+        const int n = std::min<int>(chunk, end - begin);
+        const double* x = sorted_x_[0].data() + begin;
+        const double* y = sorted_x_[1].data() + begin;
+        const double* z = sorted_x_[2].data() + begin;
+        double d2[chunk];
+        for (int i = 0; i < n; ++i)
+          d2[i] = (x[i] - q[0]) * (x[i] - q[0]) + (y[i] - q[1]) * (y[i] - q[1]) + (z[i] - q[2]) * (z[i] - q[2]);
+        for (int i = 0; i < n; ++i)
+          if (d2[i] <= r2) f(sorted_[begin + i], d2[i]);
       }
     }
 }
