@@ -106,7 +106,7 @@ def main():
             view.set_ylabel(f"{AXIS_NAMES[axis]} (mm)")
             view.set_title(f"{AXIS_NAMES[horizontal]}-{AXIS_NAMES[axis]} view")
             view.grid(True, linewidth=0.3, alpha=0.5)
-        views[1].legend(loc="best", markerscale=max(1.0, 12.0 / size), fontsize=8)
+        views[1].legend(loc="upper right", markerscale=max(1.0, 12.0 / size), fontsize=8)
         title = summary.get("title", os.path.basename(os.path.abspath(run)))
         fig.suptitle("\n".join(textwrap.wrap(f"{title}: t = {time * 1e6:.2f} µs", 110)))
         path = os.path.join(out, f"debris_cloud_{step:08d}.png")
