@@ -36,6 +36,9 @@ class CellList {
 
  private:
   std::array<int, 3> cellOf(const Vec3& x) const;
+  // The cells [lo, hi] (per axis, clamped to the grid) that may hold a position within `radius`
+  // of q; false if there are none.
+  bool cellRange(const Vec3& q, double radius, std::array<int, 3>& lo, std::array<int, 3>& hi) const;
   long flat(int i, int j, int k) const { return (static_cast<long>(k) * dims_[1] + j) * dims_[0] + i; }
 
   Vec3 origin_ = Vec3::Zero();
@@ -56,15 +59,21 @@ inline std::array<int, 3> CellList::cellOf(const Vec3& x) const {
   return c;
 }
 
-template <typename F>
-void CellList::forEachCellNear(const Vec3& q, double radius, F&& f) const {
-  std::array<int, 3> lo = cellOf(q - Vec3::Constant(radius));
-  std::array<int, 3> hi = cellOf(q + Vec3::Constant(radius));
+inline bool CellList::cellRange(const Vec3& q, double radius, std::array<int, 3>& lo, std::array<int, 3>& hi) const {
+  lo = cellOf(q - Vec3::Constant(radius));
+  hi = cellOf(q + Vec3::Constant(radius));
   for (int d = 0; d < 3; ++d) {
     lo[d] = std::max(lo[d], 0);
     hi[d] = std::min(hi[d], dims_[d] - 1);
-    if (lo[d] > hi[d]) return;
+    if (lo[d] > hi[d]) return false;
   }
+  return true;
+}
+
+template <typename F>
+void CellList::forEachCellNear(const Vec3& q, double radius, F&& f) const {
+  std::array<int, 3> lo, hi;
+  if (!cellRange(q, radius, lo, hi)) return;
   for (int k = lo[2]; k <= hi[2]; ++k)
     for (int j = lo[1]; j <= hi[1]; ++j)
       for (int i = lo[0]; i <= hi[0]; ++i) f(flat(i, j, k));
@@ -83,13 +92,8 @@ void CellList::forEachCellAround(long cell, F&& f) const {
 template <typename F>
 void CellList::forEachWithin(const Vec3& q, double radius, F&& f) const {
   const double r2 = radius * radius;
-  std::array<int, 3> lo = cellOf(q - Vec3::Constant(radius));
-  std::array<int, 3> hi = cellOf(q + Vec3::Constant(radius));
-  for (int d = 0; d < 3; ++d) {
-    lo[d] = std::max(lo[d], 0);
-    hi[d] = std::min(hi[d], dims_[d] - 1);
-    if (lo[d] > hi[d]) return;
-  }
+  std::array<int, 3> lo, hi;
+  if (!cellRange(q, radius, lo, hi)) return;
   // The cells of a row along x are consecutive, so are their positions: one loop per row, the
   // distances first (vectorised), then the calls.
   constexpr int chunk = 64;

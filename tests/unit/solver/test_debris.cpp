@@ -12,6 +12,8 @@
 #include "solver/otm/neighbourhoods.hpp"
 #include "solver/otm/setup.hpp"
 
+#include "momentum.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -36,13 +38,6 @@ Model debrisOntoWall() {
   addBody(model, "wall", al, box(Vec3(-4e-3, -4e-3, -2e-3), Vec3(4e-3, 4e-3, 0), {8, 8, 2}), Vec3::Zero());
   for (LocalIndex p = 0; p < model.points.owned; ++p) model.points.eroded[p] = model.points.body[p] == debris_body;
   return model;
-}
-
-Vec3 momentum(const Model& model, int body) {
-  Vec3 sum = Vec3::Zero();
-  for (LocalIndex p = 0; p < model.points.owned; ++p)
-    if (model.points.body[p] == body) sum += model.points.mass[p] * model.points.v[p];
-  return sum;
 }
 
 struct Flight {
@@ -76,10 +71,10 @@ TEST(DebrisCapture, AWallTheDebrisMayHitCatchesItAndTakesItsMomentum) {
     // it flew at, 3 us after the catch), far slower than it flew.
     EXPECT_LT(points.v[p].norm(), 0.5 * speed);
   }
-  const Vec3 total = momentum(f.model, debris_body) + momentum(f.model, wall_body);
+  const Vec3 total = bodyMomentum(f.model, debris_body) + bodyMomentum(f.model, wall_body);
   EXPECT_LT((total - f.initial_momentum).norm(), 1e-10 * f.initial_momentum.norm());
   // The wall carries most of the momentum now (the debris is 1/32 of its mass).
-  EXPECT_LT(momentum(f.model, wall_body)[2], 0.5 * f.initial_momentum[2]);
+  EXPECT_LT(bodyMomentum(f.model, wall_body)[2], 0.5 * f.initial_momentum[2]);
 }
 
 // The impact itself, on its own: debris points inside a moving wall, caught in one search, take
@@ -109,10 +104,11 @@ TEST(DebrisCapture, TheCatchIsInelasticWithExactMomentumAndEnergy) {
       sum += points.mass[p] * (0.5 * points.v[p].squaredNorm() + points.energy[p]);
     return sum;
   };
-  const Vec3 p_before = momentum(model, debris_body) + momentum(model, wall_body);
+  const Vec3 p_before = bodyMomentum(model, debris_body) + bodyMomentum(model, wall_body);
   const double e_before = energy();
   const double heat = catchDebris(model, neighbourhoods.caught());
-  EXPECT_LT((momentum(model, debris_body) + momentum(model, wall_body) - p_before).norm(), 1e-12 * p_before.norm());
+  EXPECT_LT((bodyMomentum(model, debris_body) + bodyMomentum(model, wall_body) - p_before).norm(),
+            1e-12 * p_before.norm());
   EXPECT_NEAR(energy(), e_before, 1e-12 * e_before);
   EXPECT_GT(heat, 0.1 * e_before);  // 1 km/s onto ~50 m/s: most of the debris' kinetic energy
   const Connectivity& conn = model.connectivity;
