@@ -45,7 +45,7 @@ struct BenchOptions {
   int steps = 0;
   std::string json;
   std::vector<std::string> overrides;  // deck settings changed from the problem's ("solver.lme_gamma=4")
-  bool single = false;  // run one problem in this process (the child of a bench run)
+  bool single = false;                 // run one problem in this process (the child of a bench run)
 };
 
 // Peak resident set of this process, bytes (Linux reports ru_maxrss in KiB).
@@ -80,8 +80,8 @@ nlohmann::json runOne(const BenchProblem& problem, BenchSize size, int steps_wan
   const double target = targetPoints(problem, size);
   const double h = meshSizeFor(problem, size, target);
   const int steps = steps_wanted > 0 ? steps_wanted : defaultSteps(problem, size);
-  io::RunConfig config =
-      io::parseDeckString(problem.deck(h, quarterModel(problem, size)), fmt::format("bench:{}", problem.name), overrides);
+  io::RunConfig config = io::parseDeckString(problem.deck(h, quarterModel(problem, size)),
+                                             fmt::format("bench:{}", problem.name), overrides);
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() / fmt::format("kessler-bench-{}-{}", getpid(), problem.name);
   std::filesystem::remove_all(dir);

@@ -210,8 +210,7 @@ void Neighbourhoods::carryDebris(Model& model, LocalIndex p, Index first, std::s
 // A point near a strongly compressed or re-entrant surface can fall outside the hull of the nodes
 // within its cut-off: it is retried from lambda = 0 with radii 1.5, 2.25 and 3.375 times larger and
 // gamma 1, 1/2 and 1/4 times the settings', before the run stops (without the visibility test); a
-// failed point is released instead. Rare,
-// so the connectivity is then rebuilt with the retried rows.
+// failed point is released instead. Rare, so the connectivity is then rebuilt with the retried rows.
 void Neighbourhoods::retryFailedPoints(Model& model) {
   PointStore& points = model.points;
   Connectivity& conn = model.connectivity;
