@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <new>
 #include <vector>
 
 namespace kessler::lme {
@@ -20,14 +21,18 @@ constexpr double stall_tolerance = 1e-10;
 // The offsets d_a = x - x_a one coordinate per array and -beta |d_a|^2, set once per solve, so
 // that a pass over the nodes runs four (AVX2) or two exponentials at a time (Eigen's packet exp).
 struct Offsets {
-  Eigen::ArrayXd x, y, z, base, w;
+  using Array = Eigen::Map<Eigen::ArrayXd>;
+  std::vector<double> storage;  // five arrays of n; only grows, so the time loop does not allocate
+  Eigen::Index n = 0;
+  Array x{nullptr, 0}, y{nullptr, 0}, z{nullptr, 0}, base{nullptr, 0}, w{nullptr, 0};
   void set(std::span<const Vec3> d, double beta) {
-    const auto n = static_cast<Eigen::Index>(d.size());
-    x.resize(n);
-    y.resize(n);
-    z.resize(n);
-    base.resize(n);
-    w.resize(n);
+    n = static_cast<Eigen::Index>(d.size());
+    storage.resize(5 * d.size());
+    double* data = storage.data();
+    for (Array* a : {&x, &y, &z, &base, &w}) {
+      new (a) Array(data, n);  // Eigen's documented way to re-point a Map
+      data += n;
+    }
     for (Eigen::Index a = 0; a < n; ++a) {
       x[a] = d[static_cast<std::size_t>(a)][0];
       y[a] = d[static_cast<std::size_t>(a)][1];
