@@ -1,6 +1,7 @@
 #include "approx/lme.hpp"
 
 #include <Eigen/Cholesky>
+#include <Eigen/StdVector>
 
 #include <algorithm>
 #include <cmath>
@@ -21,17 +22,22 @@ constexpr double stall_tolerance = 1e-10;
 // The offsets d_a = x - x_a one coordinate per array and -beta |d_a|^2, set once per solve, so
 // that a pass over the nodes runs four (AVX2) or two exponentials at a time (Eigen's packet exp).
 struct Offsets {
-  using Array = Eigen::Map<Eigen::ArrayXd>;
-  std::vector<double> storage;  // five arrays of n; only grows, so the time loop does not allocate
+  // Every array starts on a maximally aligned address: Eigen's vectorised sums peel elements up to
+  // the first aligned one, so an address-dependent start would make the summation order, and the
+  // last bits of the result, depend on which thread's buffer a point lands in.
+  using Array = Eigen::Map<Eigen::ArrayXd, Eigen::AlignedMax>;
+  static constexpr Eigen::Index pad = 8;                          // doubles: 64 bytes
+  std::vector<double, Eigen::aligned_allocator<double>> storage;  // only grows: no allocation per call
   Eigen::Index n = 0;
   Array x{nullptr, 0}, y{nullptr, 0}, z{nullptr, 0}, base{nullptr, 0}, w{nullptr, 0};
   void set(std::span<const Vec3> d, double beta) {
     n = static_cast<Eigen::Index>(d.size());
-    storage.resize(5 * d.size());
+    const Eigen::Index stride = (n + pad - 1) / pad * pad;
+    storage.resize(static_cast<std::size_t>(5 * stride));
     double* data = storage.data();
     for (Array* a : {&x, &y, &z, &base, &w}) {
       new (a) Array(data, n);  // Eigen's documented way to re-point a Map
-      data += n;
+      data += stride;
     }
     for (Eigen::Index a = 0; a < n; ++a) {
       x[a] = d[static_cast<std::size_t>(a)][0];
