@@ -9,15 +9,24 @@ namespace kessler {
 
 void CellList::build(const std::vector<Vec3>& x, LocalIndex count, double cell_size) {
   KESSLER_VERIFY(cell_size > 0.0 && std::isfinite(cell_size), "cell list: invalid cell size {}", cell_size);
-  Vec3 lo = Vec3::Constant(0.0), hi = Vec3::Constant(0.0);
+  // The bounding box (min and max are exact, so the parallel reduction gives the same box for
+  // any thread count).
+  double lo0 = 0.0, lo1 = 0.0, lo2 = 0.0, hi0 = 0.0, hi1 = 0.0, hi2 = 0.0;
   if (count > 0) {
-    lo = x[0];
-    hi = x[0];
-    for (LocalIndex a = 1; a < count; ++a) {
-      lo = lo.cwiseMin(x[a]);
-      hi = hi.cwiseMax(x[a]);
-    }
+    lo0 = hi0 = x[0][0];
+    lo1 = hi1 = x[0][1];
+    lo2 = hi2 = x[0][2];
   }
+#pragma omp parallel for schedule(static) reduction(min : lo0, lo1, lo2) reduction(max : hi0, hi1, hi2)
+  for (LocalIndex a = 0; a < count; ++a) {
+    lo0 = std::min(lo0, x[a][0]);
+    lo1 = std::min(lo1, x[a][1]);
+    lo2 = std::min(lo2, x[a][2]);
+    hi0 = std::max(hi0, x[a][0]);
+    hi1 = std::max(hi1, x[a][1]);
+    hi2 = std::max(hi2, x[a][2]);
+  }
+  const Vec3 lo(lo0, lo1, lo2), hi(hi0, hi1, hi2);
   KESSLER_VERIFY(lo.allFinite() && hi.allFinite(), "cell list: non-finite node position");
   // Keep the grid at most ~4 cells per position: a few far-flung fragments must not make
   // the grid (and the memory) explode.
@@ -38,21 +47,22 @@ void CellList::build(const std::vector<Vec3>& x, LocalIndex count, double cell_s
   std::vector<long>& cell_of = cell_of_;
   cell_of.resize(static_cast<std::size_t>(count));
   start_.assign(static_cast<std::size_t>(cells) + 1, 0);
+#pragma omp parallel for schedule(static)
   for (LocalIndex a = 0; a < count; ++a) {
     std::array<int, 3> c = cellOf(x[a]);
     for (int d = 0; d < 3; ++d) c[d] = std::clamp(c[d], 0, dims_[d] - 1);
     cell_of[a] = flat(c[0], c[1], c[2]);
-    ++start_[cell_of[a] + 1];
   }
+  for (LocalIndex a = 0; a < count; ++a) ++start_[cell_of[a] + 1];
   for (long c = 0; c < cells; ++c) start_[c + 1] += start_[c];
   sorted_.resize(static_cast<std::size_t>(count));
   cursor_.assign(start_.begin(), start_.end() - 1);
   for (LocalIndex a = 0; a < count; ++a) sorted_[cursor_[cell_of[a]]++] = a;
   // Positions in cell order: a query streams through them instead of jumping through x.
-  for (int d = 0; d < 3; ++d) {
-    sorted_x_[d].resize(static_cast<std::size_t>(count));
-    for (LocalIndex s = 0; s < count; ++s) sorted_x_[d][s] = x[sorted_[s]][d];
-  }
+  for (int d = 0; d < 3; ++d) sorted_x_[d].resize(static_cast<std::size_t>(count));
+#pragma omp parallel for schedule(static)
+  for (LocalIndex s = 0; s < count; ++s)
+    for (int d = 0; d < 3; ++d) sorted_x_[d][s] = x[sorted_[s]][d];
 }
 
 }  // namespace kessler
