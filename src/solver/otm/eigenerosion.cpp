@@ -31,12 +31,14 @@ LocalIndex Eigenerosion::apply(Model& model) {
   // few strongly expanded points must not make every cell large.
   candidate_x_.clear();
   candidate_.clear();
+  candidate_eps_.clear();
   double eps_sum = 0.0;
   for (LocalIndex p = 0; p < np; ++p) {
     if (points.eroded[p] || gc[points.body[p]] <= 0.0) continue;
     candidate_x_.push_back(points.x[p]);
     candidate_.push_back(p);
-    eps_sum += settings_.erosion_radius * points.spacing(p);
+    candidate_eps_.push_back(settings_.erosion_radius * points.spacing(p));
+    eps_sum += candidate_eps_.back();
   }
   const auto count = static_cast<LocalIndex>(candidate_.size());
   if (count == 0) return 0;
@@ -63,9 +65,10 @@ LocalIndex Eigenerosion::apply(Model& model) {
 #pragma omp parallel for schedule(dynamic, 64)
   for (long cell = 0; cell < cells; ++cell)
     for (LocalIndex slot = cells_.cellBegin(cell); slot < cells_.cellEnd(cell); ++slot) {
-      const LocalIndex p = candidate_[cells_.indexAt(slot)];
+      const LocalIndex k = cells_.indexAt(slot);
+      const LocalIndex p = candidate_[k];
       const int body = points.body[p];
-      const double eps = settings_.erosion_radius * points.spacing(p);
+      const double eps = candidate_eps_[k];
       double bound = cell_bound_[cell];
       if (eps > cells_.cellSize()) {
         bound = 0.0;

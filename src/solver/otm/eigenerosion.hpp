@@ -37,6 +37,7 @@ class Eigenerosion {
   CellList cells_;                     // over the candidates only (candidate_x_)
   std::vector<Vec3> candidate_x_;      // intact points of eroding bodies ...
   std::vector<LocalIndex> candidate_;  // ... and their point indices, in point order
+  std::vector<double> candidate_eps_;  // ... and their ball radii eps = erosion_radius h
   std::vector<double> cell_max_;       // largest W of the candidates in each cell
   std::vector<double> cell_bound_;     // ... and in the cells around it
   std::vector<std::uint8_t> erode_;

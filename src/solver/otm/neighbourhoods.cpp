@@ -88,7 +88,7 @@ bool Neighbourhoods::hidden(const Vec3& xp, const Vec3& xa, double spacing, cons
 int Neighbourhoods::gather(const Model& model, LocalIndex p, double scale, bool visibility, Scratch& s) const {
   const NodeStore& nodes = model.nodes;
   const PointStore& points = model.points;
-  const double h = points.spacing(p);
+  const double h = spacing_[p];
   const int own = points.body[p];
   const double contact2 = settings_.contact_distance * settings_.contact_distance * h * h;
   double radius = scale * lme::cutoffRadius(settings_.lme_gamma, h, settings_.lme_tolerance);
@@ -131,8 +131,8 @@ int Neighbourhoods::gather(const Model& model, LocalIndex p, double scale, bool 
   return static_cast<int>(s.node.size());
 }
 
-double Neighbourhoods::debrisSpacing(const PointStore& points, LocalIndex p, int body) const {
-  return std::max(points.spacing(p), body_spacing_[static_cast<std::size_t>(body)]);
+double Neighbourhoods::debrisSpacing(LocalIndex p, int body) const {
+  return std::max(spacing_[p], body_spacing_[static_cast<std::size_t>(body)]);
 }
 
 int Neighbourhoods::gatherDebris(const Model& model, LocalIndex p, Scratch& s) const {
@@ -142,7 +142,7 @@ int Neighbourhoods::gatherDebris(const Model& model, LocalIndex p, Scratch& s) c
   const auto passes_through = static_cast<std::uint64_t>(points.passes_through[p]);
   if (passes_through == 0 || !settings_.debris_capture) return 0;
   auto may_hit = [&](int body) { return !((passes_through >> body) & 1u); };
-  double reach = points.spacing(p);  // the largest support of the point over the bodies it may hit
+  double reach = spacing_[p];  // the largest support of the point over the bodies it may hit
   // Debris that may hit no body (all the debris of a projectile and the one plate it struck)
   // searches nothing.
   bool any = false;
@@ -161,7 +161,7 @@ int Neighbourhoods::gatherDebris(const Model& model, LocalIndex p, Scratch& s) c
   if (carrier < 0) {
     double nearest = std::numeric_limits<double>::infinity();
     for (const auto& [a, d2] : s.candidates) {
-      const double contact = settings_.contact_distance * debrisSpacing(points, p, nodes.body[a]);
+      const double contact = settings_.contact_distance * debrisSpacing(p, nodes.body[a]);
       if (d2 <= contact * contact && d2 < nearest) {
         nearest = d2;
         carrier = nodes.body[a];
@@ -170,7 +170,7 @@ int Neighbourhoods::gatherDebris(const Model& model, LocalIndex p, Scratch& s) c
     if (carrier < 0) return 0;
   }
   const double cutoff =
-      lme::cutoffRadius(settings_.lme_gamma, debrisSpacing(points, p, carrier), settings_.lme_tolerance);
+      lme::cutoffRadius(settings_.lme_gamma, debrisSpacing(p, carrier), settings_.lme_tolerance);
   for (const auto& [a, d2] : s.candidates)
     if (nodes.body[a] == carrier && d2 <= cutoff * cutoff) s.node.push_back(a);
   if (static_cast<int>(s.node.size()) < settings_.min_neighbours) s.node.clear();
@@ -195,7 +195,7 @@ void Neighbourhoods::carryDebris(Model& model, LocalIndex p, Index first, std::s
   if (newly) points.lambda[p].setZero();  // the warm start is from the point's intact past
   const std::span<double> N(conn.N.data() + first, n);
   const std::span<Vec3> dN(conn.dN.data() + first, n);
-  const double h = debrisSpacing(points, p, carrier);
+  const double h = debrisSpacing(p, carrier);
   if (shapeFunctionsAt(model, p, std::span<const LocalIndex>(conn.node.data() + first, n), N, dN, s, h).status ==
       lme::Status::converged) {
     if (newly) s.caught.push_back(p);
@@ -241,7 +241,7 @@ void Neighbourhoods::retryFailedPoints(Model& model) {
       // of nodes (against a rigid wall, say) sees the nodes beyond the layer with weights
       // exp(-gamma (d/h)^2) that vanish at gamma = 4, and its covariance turns singular.
       r = shapeFunctionsAt(model, p, s.node, std::span<double>(s.N.data() + start[k], size),
-                           std::span<Vec3>(s.dN.data() + start[k], size), s, points.spacing(p),
+                           std::span<Vec3>(s.dN.data() + start[k], size), s, spacing_[p],
                            std::pow(0.5, attempt - 1));
       if (r.status == lme::Status::converged) break;
     }
@@ -315,6 +315,9 @@ void Neighbourhoods::update(Model& model) {
   // nodes (a fine debris cloud caught by a coarse wall needs the wall's node spacing). Bodies are
   // contiguous ranges of points; their sums are deterministic whatever the thread count.
   const std::size_t bodies = model.bodies.size();
+  spacing_.resize(static_cast<std::size_t>(np));
+#pragma omp parallel for schedule(static)
+  for (LocalIndex p = 0; p < np; ++p) spacing_[p] = points.spacing(p);
   body_spacing_.assign(bodies, 0.0);
   body_points_.assign(bodies, 0);
   double spacing_sum = 0.0;
@@ -324,7 +327,7 @@ void Neighbourhoods::update(Model& model) {
     const Eigen::Vector2d sum =
         deterministicSum(std::max(end - begin, 0), Eigen::Vector2d(Eigen::Vector2d::Zero()), [&](LocalIndex i) {
           const LocalIndex p = begin + i;
-          return points.eroded[p] ? Eigen::Vector2d(0.0, 0.0) : Eigen::Vector2d(points.spacing(p), 1.0);
+          return points.eroded[p] ? Eigen::Vector2d(0.0, 0.0) : Eigen::Vector2d(spacing_[p], 1.0);
         });
     spacing_sum += sum[0];
     intact += static_cast<LocalIndex>(sum[1]);
@@ -412,11 +415,11 @@ void Neighbourhoods::update(Model& model) {
       std::fill(conn.dN.begin() + first + visible, conn.dN.begin() + first + n, Vec3::Zero());
       lme::Result r = shapeFunctionsAt(model, p, std::span<const LocalIndex>(row, visible),
                                        std::span<double>(conn.N.data() + first, visible),
-                                       std::span<Vec3>(conn.dN.data() + first, visible), s, points.spacing(p));
+                                       std::span<Vec3>(conn.dN.data() + first, visible), s, spacing_[p]);
       if (r.status != lme::Status::converged && visible < n) {
         model.points.lambda[p].setZero();
         r = shapeFunctionsAt(model, p, std::span<const LocalIndex>(row, n), std::span<double>(conn.N.data() + first, n),
-                             std::span<Vec3>(conn.dN.data() + first, n), s, points.spacing(p));
+                             std::span<Vec3>(conn.dN.data() + first, n), s, spacing_[p]);
       }
       if (r.status != lme::Status::converged) s.retry.push_back(p);
     }

@@ -72,7 +72,7 @@ class Neighbourhoods {
                                std::span<Vec3> dN, Scratch& s, double h, double gamma_scale = 1.0) const;
   // The support size of debris point p among the nodes of `body`: its own spacing, or the body's
   // mean spacing if larger.
-  double debrisSpacing(const PointStore& points, LocalIndex p, int body) const;
+  double debrisSpacing(LocalIndex p, int body) const;
   // Retries the points whose shape functions failed with larger radii; throws if one still fails.
   void retryFailedPoints(Model& model);
 
@@ -88,6 +88,7 @@ class Neighbourhoods {
   std::vector<std::size_t> chunk_start_;  // and where its node lists start in that thread's rows
   std::vector<Index> transpose_scratch_;
   std::vector<LocalIndex> caught_;
+  std::vector<double> spacing_;          // per point: its support size h this step (a cube root each)
   std::vector<double> body_spacing_;     // mean spacing of each body's intact points
   std::vector<LocalIndex> body_points_;  // and their count
   double search_seconds_ = 0.0, shape_seconds_ = 0.0;
