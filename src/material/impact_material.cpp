@@ -176,7 +176,9 @@ void ImpactMaterial::update(PointStore& points, LocalIndex begin, LocalIndex end
                           &damage};
   std::visit(
       [&](const auto& eos, const auto& law) {
-#pragma omp parallel for schedule(static)
+        // Dynamic: points in plastic flow (the impact zone, all in one part of the body) cost
+        // several times more than elastic ones, and each point's update is its own.
+#pragma omp parallel for schedule(dynamic, 512)
         for (LocalIndex p = begin; p < end; ++p) {
           if (points.debris(p)) {
             // Debris: keeps mass and momentum, carries no stress.
