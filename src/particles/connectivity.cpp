@@ -30,11 +30,11 @@ void Connectivity::resizeRows(std::size_t entries) {
 }
 
 void Connectivity::buildTranspose(LocalIndex node_count) {
-  std::vector<Index> scratch;
+  std::vector<std::uint32_t> scratch;
   buildTranspose(node_count, scratch);
 }
 
-void Connectivity::buildTranspose(LocalIndex node_count, std::vector<Index>& scratch) {
+void Connectivity::buildTranspose(LocalIndex node_count, std::vector<std::uint32_t>& scratch) {
   const LocalIndex np = points();
   const Index entries = offset.empty() ? 0 : offset.back();
   KESSLER_VERIFY(entries <= Index{std::numeric_limits<std::uint32_t>::max()},
@@ -50,8 +50,8 @@ void Connectivity::buildTranspose(LocalIndex node_count, std::vector<Index>& scr
     const int nt = omp_get_num_threads();
     const LocalIndex begin = static_cast<LocalIndex>(static_cast<Index>(np) * t / nt);
     const LocalIndex end = static_cast<LocalIndex>(static_cast<Index>(np) * (t + 1) / nt);
-    Index* count = scratch.data() + static_cast<std::size_t>(t) * static_cast<std::size_t>(node_count);
-    std::fill(count, count + node_count, Index{0});
+    std::uint32_t* count = scratch.data() + static_cast<std::size_t>(t) * static_cast<std::size_t>(node_count);
+    std::fill(count, count + node_count, std::uint32_t{0});
     for (LocalIndex p = begin; p < end; ++p)
       for (Index k = offset[p]; k < offset[p + 1]; ++k) ++count[node[k]];
 #pragma omp barrier
@@ -66,17 +66,17 @@ void Connectivity::buildTranspose(LocalIndex node_count, std::vector<Index>& scr
     for (LocalIndex a = 0; a < node_count; ++a) node_offset[a + 1] += node_offset[a];
 #pragma omp for schedule(static)
     for (LocalIndex a = 0; a < node_count; ++a) {
-      Index at = node_offset[a];
+      auto at = static_cast<std::uint32_t>(node_offset[a]);
       for (int u = 0; u < nt; ++u) {
-        Index& c = scratch[static_cast<std::size_t>(u) * node_count + a];
-        const Index n = c;
+        std::uint32_t& c = scratch[static_cast<std::size_t>(u) * node_count + a];
+        const std::uint32_t n = c;
         c = at;
         at += n;
       }
     }
     for (LocalIndex p = begin; p < end; ++p)
       for (Index k = offset[p]; k < offset[p + 1]; ++k) {
-        const Index slot = count[node[k]]++;
+        const std::uint32_t slot = count[node[k]]++;
         node_entry[slot] = static_cast<std::uint32_t>(k);
         node_point[slot] = p;
       }

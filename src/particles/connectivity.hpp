@@ -29,10 +29,10 @@ struct Connectivity {
   // std::vector::resize would double them (hvi-100k: 0.9 KB per point of capacity never used).
   void resizeRows(std::size_t entries);
   // Builds node_offset, node_entry and node_point from offset and node, in parallel; the result
-  // does not depend on the thread count. `scratch` (threads x nodes counters) may be kept by the
-  // caller so that the time loop does not allocate.
+  // does not depend on the thread count. `scratch` (threads x nodes 32-bit counters, like the
+  // entries) may be kept by the caller so that the time loop does not allocate.
   void buildTranspose(LocalIndex node_count);
-  void buildTranspose(LocalIndex node_count, std::vector<Index>& scratch);
+  void buildTranspose(LocalIndex node_count, std::vector<std::uint32_t>& scratch);
 };
 
 }  // namespace kessler

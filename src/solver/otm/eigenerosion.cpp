@@ -1,5 +1,7 @@
 #include "solver/otm/eigenerosion.hpp"
 
+#include "core/reduce.hpp"
+
 #include <algorithm>
 #include <limits>
 
@@ -31,17 +33,18 @@ LocalIndex Eigenerosion::apply(Model& model) {
   // few strongly expanded points must not make every cell large.
   candidate_x_.clear();
   candidate_.clear();
-  candidate_eps_.clear();
-  double eps_sum = 0.0;
   for (LocalIndex p = 0; p < np; ++p) {
     if (points.eroded[p] || gc[points.body[p]] <= 0.0) continue;
     candidate_x_.push_back(points.x[p]);
     candidate_.push_back(p);
-    candidate_eps_.push_back(settings_.erosion_radius * points.spacing(p));
-    eps_sum += candidate_eps_.back();
   }
   const auto count = static_cast<LocalIndex>(candidate_.size());
   if (count == 0) return 0;
+  candidate_eps_.resize(static_cast<std::size_t>(count));
+  const double eps_sum = deterministicSum(count, 0.0, [&](LocalIndex k) {
+    candidate_eps_[k] = settings_.erosion_radius * points.spacing(candidate_[k]);
+    return candidate_eps_[k];
+  });
   cells_.build(candidate_x_, count, eps_sum / count);
   // G_p is C_eps times a mass-weighted mean of W over the ball, so it cannot exceed C_eps times
   // the largest W in the cells the ball touches. Points whose bound stays below G_c (most of a

@@ -97,14 +97,13 @@ void Integrator::assembleNodes() {
 void Integrator::updateNodes(double dt, double dt_average) {
   NodeStore& nodes = model_.nodes;
   dt_step_ = dt;
-  dv_.resize(static_cast<std::size_t>(nodes.size()));
-  du_.resize(static_cast<std::size_t>(nodes.size()));
+  increment_.resize(static_cast<std::size_t>(nodes.size()));
 #pragma omp parallel for schedule(static)
   for (LocalIndex a = 0; a < nodes.owned; ++a) {
     // A node that no point references carries no mass and does not move.
     if (nodes.mass[a] <= 0.0) {
-      dv_[a].setZero();
-      du_[a].setZero();
+      increment_[a].du.setZero();
+      increment_[a].dv.setZero();
       nodes.v[a].setZero();
       continue;
     }
@@ -117,10 +116,10 @@ void Integrator::updateNodes(double dt, double dt_average) {
       const double gap = nodes.x[a][wall.axis] - wall.position;
       if (wall.side * (gap + dt * v_new[wall.axis]) < 0.0) v_new[wall.axis] = -gap / dt;
     }
-    dv_[a] = v_new - v_old;
-    du_[a] = dt * v_new;
+    increment_[a].dv = v_new - v_old;
+    increment_[a].du = dt * v_new;
     nodes.v[a] = v_new;
-    nodes.x[a] += du_[a];
+    nodes.x[a] += increment_[a].du;
   }
 }
 
@@ -145,10 +144,10 @@ void Integrator::updatePoints() {
     Vec3 dx = Vec3::Zero(), dv = Vec3::Zero();
     Mat3 dF = Mat3::Identity();
     for (Index e = conn.offset[p]; e < conn.offset[p + 1]; ++e) {
-      const LocalIndex a = conn.node[e];
-      dx += conn.N[e] * du_[a];
-      dv += conn.N[e] * dv_[a];
-      dF.noalias() += du_[a] * conn.dN[e].transpose();
+      const NodeIncrement& node = increment_[conn.node[e]];
+      dx += conn.N[e] * node.du;
+      dv += conn.N[e] * node.dv;
+      dF.noalias() += node.du * conn.dN[e].transpose();
     }
     if (points.debris(p)) {
       // Debris a body has caught: carried by its nodes, with no strain of its own.
@@ -196,18 +195,25 @@ void Integrator::averageVolumeChange() {
   PointStore& points = model_.points;
   const Connectivity& conn = model_.connectivity;
   j_node_.resize(static_cast<std::size_t>(model_.nodes.size()));
-#pragma omp parallel for schedule(static)
-  for (LocalIndex a = 0; a < model_.nodes.owned; ++a) {
-    double m = 0.0, mj = 0.0;
-    for (Index k = conn.node_offset[a]; k < conn.node_offset[a + 1]; ++k) {
-      const Index e = conn.node_entry[k];
-      const LocalIndex p = conn.node_point[k];
-      if (points.debris(p)) continue;
-      const double w = conn.N[e] * points.mass[p];
-      m += w;
-      mj += w * j_point_[p];
+  j_weight_.resize(static_cast<std::size_t>(points.owned));
+#pragma omp parallel
+  {
+    // The weights packed per point first, so that the gather reads one record per entry.
+#pragma omp for schedule(static)
+    for (LocalIndex p = 0; p < points.owned; ++p)
+      j_weight_[p] = points.debris(p) ? std::array<double, 2>{0.0, 0.0}
+                                      : std::array<double, 2>{points.mass[p], points.mass[p] * j_point_[p]};
+#pragma omp for schedule(static)
+    for (LocalIndex a = 0; a < model_.nodes.owned; ++a) {
+      double m = 0.0, mj = 0.0;
+      for (Index k = conn.node_offset[a]; k < conn.node_offset[a + 1]; ++k) {
+        const double N = conn.N[conn.node_entry[k]];
+        const std::array<double, 2>& w = j_weight_[conn.node_point[k]];
+        m += N * w[0];
+        mj += N * w[1];
+      }
+      j_node_[a] = m > 0.0 ? mj / m : 1.0;
     }
-    j_node_[a] = m > 0.0 ? mj / m : 1.0;
   }
 #pragma omp parallel for schedule(static)
   for (LocalIndex p = 0; p < points.owned; ++p) {

@@ -77,9 +77,15 @@ class Integrator {
   Neighbourhoods neighbourhoods_;
   Eigenerosion erosion_;
   DebrisRelease release_;
-  std::vector<Vec3> dv_;                  // nodal velocity increment of the step (FLIP-style transfer to points)
-  std::vector<Vec3> du_;                  // nodal displacement of the step
+  // Each node's displacement and velocity increment of the step (FLIP-style transfer to points),
+  // side by side: the points' gather reads both for each of its nodes.
+  struct NodeIncrement {
+    Vec3 du, dv;
+  };
+  std::vector<NodeIncrement> increment_;
   std::vector<double> j_point_, j_node_;  // det(dF) per point (after averaging), averaged per node
+  // Per point, the weights of the volume average: m_p and m_p det(dF) (zero for debris).
+  std::vector<std::array<double, 2>> j_weight_;
   std::vector<PointLoad> loads_;          // assembly scratch, one record per point
   double dt_step_ = 0.0;                  // length of the step in progress
   PhaseTimers timers_;

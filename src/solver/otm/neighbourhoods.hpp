@@ -86,7 +86,7 @@ class Neighbourhoods {
   std::vector<int> visible_;              // per point: the first visible_ nodes of its row are visible
   std::vector<int> chunk_thread_;         // per chunk of points: the thread that searched it
   std::vector<std::size_t> chunk_start_;  // and where its node lists start in that thread's rows
-  std::vector<Index> transpose_scratch_;
+  std::vector<std::uint32_t> transpose_scratch_;
   std::vector<LocalIndex> caught_;
   std::vector<double> spacing_;          // per point: its support size h this step (a cube root each)
   std::vector<double> body_spacing_;     // mean spacing of each body's intact points

@@ -10,6 +10,7 @@ LocalIndex DebrisRelease::apply(Model& model) {
   const LocalIndex np = points.owned;
   releasing_.assign(static_cast<std::size_t>(np), 0);
   LocalIndex count = 0;
+#pragma omp parallel for schedule(static) reduction(+ : count)
   for (LocalIndex p = 0; p < np; ++p)
     if (points.failed(p) && points.stress[p].trace() == 0.0) {
       releasing_[p] = 1;
