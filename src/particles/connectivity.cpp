@@ -48,8 +48,14 @@ void Connectivity::buildTranspose(LocalIndex node_count, std::vector<std::uint32
   {
     const int t = omp_get_thread_num();
     const int nt = omp_get_num_threads();
-    const LocalIndex begin = static_cast<LocalIndex>(static_cast<Index>(np) * t / nt);
-    const LocalIndex end = static_cast<LocalIndex>(static_cast<Index>(np) * (t + 1) / nt);
+    // Blocks of equal numbers of entries rather than points (contact rows are longer, debris rows
+    // empty); the result does not depend on where the blocks end.
+    auto blockStart = [&](int u) {
+      const Index target = entries * u / nt;
+      return static_cast<LocalIndex>(std::lower_bound(offset.begin(), offset.end(), target) - offset.begin());
+    };
+    const LocalIndex begin = std::min(blockStart(t), np);
+    const LocalIndex end = t + 1 == nt ? np : std::min(blockStart(t + 1), np);
     std::uint32_t* count = scratch.data() + static_cast<std::size_t>(t) * static_cast<std::size_t>(node_count);
     std::fill(count, count + node_count, std::uint32_t{0});
     for (LocalIndex p = begin; p < end; ++p)

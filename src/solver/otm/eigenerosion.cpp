@@ -65,7 +65,7 @@ LocalIndex Eigenerosion::apply(Model& model) {
                              [&](long near) { cell_bound_[cell] = std::max(cell_bound_[cell], cell_max_[near]); });
 
   erode_.assign(static_cast<std::size_t>(np), 0);
-#pragma omp parallel for schedule(dynamic, 64)
+#pragma omp parallel for schedule(dynamic, 8)
   for (long cell = 0; cell < cells; ++cell)
     for (LocalIndex slot = cells_.cellBegin(cell); slot < cells_.cellEnd(cell); ++slot) {
       const LocalIndex k = cells_.indexAt(slot);

@@ -18,7 +18,9 @@ void assembleNodes(const Connectivity& conn, const PointStore& points, NodeStore
       else
         load.minus_volume_stress = -points.volume[p] * points.stress[p];
     }
-#pragma omp for schedule(static)
+    // Dynamic: nodes in contact or in the impact zone have several times the entries of others,
+    // and they sit together (each node's sum is its own, so any schedule gives the same result).
+#pragma omp for schedule(dynamic, 256)
     for (LocalIndex a = 0; a < nodes.owned; ++a) {
       double m = 0.0;
       Vec3 l = Vec3::Zero(), f = Vec3::Zero();
