@@ -28,7 +28,7 @@ static_assert(sizeof(PointStore) == point_field_count * sizeof(std::vector<doubl
               "PointStore gained or lost a field: add it to pointFields() in io/checkpoint.cpp");
 static_assert(sizeof(NodeStore) == node_field_count * sizeof(std::vector<double>) + sizeof(std::int64_t),
               "NodeStore gained or lost a field: add it to nodeFields() in io/checkpoint.cpp");
-static_assert(sizeof(Connectivity) == 7 * sizeof(std::vector<double>),
+static_assert(sizeof(Connectivity) == 6 * sizeof(std::vector<double>),
               "Connectivity changed: check what io/checkpoint.cpp stores and rebuilds");
 
 template <class Store, class Visit>

@@ -39,8 +39,7 @@ void Connectivity::buildTranspose(LocalIndex node_count, std::vector<std::uint32
   const Index entries = offset.empty() ? 0 : offset.back();
   KESSLER_VERIFY(entries <= Index{std::numeric_limits<std::uint32_t>::max()},
                  "{} point-node entries on one rank: more than the transpose's 32-bit indices hold", entries);
-  resizeWithHeadroom(node_entry, static_cast<std::size_t>(entries));
-  resizeWithHeadroom(node_point, static_cast<std::size_t>(entries));
+  resizeWithHeadroom(node_slot, static_cast<std::size_t>(entries));
   node_offset.assign(static_cast<std::size_t>(node_count) + 1, 0);
   const int threads = omp_get_max_threads();
   scratch.resize(static_cast<std::size_t>(threads) * static_cast<std::size_t>(node_count));
@@ -82,9 +81,7 @@ void Connectivity::buildTranspose(LocalIndex node_count, std::vector<std::uint32
     }
     for (LocalIndex p = begin; p < end; ++p)
       for (Index k = offset[p]; k < offset[p + 1]; ++k) {
-        const std::uint32_t slot = count[node[k]]++;
-        node_entry[slot] = static_cast<std::uint32_t>(k);
-        node_point[slot] = p;
+        node_slot[count[node[k]]++] = NodeSlot{static_cast<std::uint32_t>(k), p};
       }
   }
 }

@@ -17,18 +17,23 @@ struct Connectivity {
   std::vector<Vec3> dN;          // its gradient
 
   // The transpose, for gathers over a node's points: node a's slots are [node_offset[a],
-  // node_offset[a+1]); each slot holds the entry and its point side by side in memory order, so a
-  // gather reads them in sequence. 32-bit entries: a rank holds fewer than 4e9 (checked).
-  std::vector<Index> node_offset;         // size nodes+1
-  std::vector<std::uint32_t> node_entry;  // entries referencing each node, sorted by point
-  std::vector<LocalIndex> node_point;     // the point of each of those entries
+  // node_offset[a+1]); each slot holds an entry referencing the node and that entry's point, side
+  // by side (one stream to write when building, one to read when gathering), sorted by point.
+  // 32-bit entries: a rank holds fewer than 4e9 (checked).
+  struct NodeSlot {
+    std::uint32_t entry;
+    LocalIndex point;
+    bool operator==(const NodeSlot&) const = default;
+  };
+  std::vector<Index> node_offset;   // size nodes+1
+  std::vector<NodeSlot> node_slot;  // the slots of all nodes
 
   LocalIndex points() const { return offset.empty() ? 0 : static_cast<LocalIndex>(offset.size() - 1); }
   // Sizes node, N and dN for `entries` entries. These are a run's largest arrays and their length
   // changes a little every step: when they must grow they take 1/8 of headroom, where
   // std::vector::resize would double them (hvi-100k: 0.9 KB per point of capacity never used).
   void resizeRows(std::size_t entries);
-  // Builds node_offset, node_entry and node_point from offset and node, in parallel; the result
+  // Builds node_offset and node_slot from offset and node, in parallel; the result
   // does not depend on the thread count. `scratch` (threads x nodes 32-bit counters, like the
   // entries) may be kept by the caller so that the time loop does not allocate.
   void buildTranspose(LocalIndex node_count);

@@ -54,8 +54,8 @@ double catchDebris(Model& model, std::span<const LocalIndex> caught) {
       const Vec3 share = conn.N[e] * excess;
       double weight = 0.0;
       for (Index k = conn.node_offset[a]; k < conn.node_offset[a + 1]; ++k) {
-        const Index f = conn.node_entry[k];
-        const LocalIndex q = conn.node_point[k];
+        const Index f = conn.node_slot[k].entry;
+        const LocalIndex q = conn.node_slot[k].point;
         if (!points.debris(q)) weight += conn.N[f] * points.mass[q];
       }
       if (!(weight > 0.0)) {
@@ -63,8 +63,8 @@ double catchDebris(Model& model, std::span<const LocalIndex> caught) {
         continue;
       }
       for (Index k = conn.node_offset[a]; k < conn.node_offset[a + 1]; ++k) {
-        const Index f = conn.node_entry[k];
-        const LocalIndex q = conn.node_point[k];
+        const Index f = conn.node_slot[k].entry;
+        const LocalIndex q = conn.node_slot[k].point;
         if (points.debris(q)) continue;
         heat += kinetic(q);
         points.v[q] += (conn.N[f] / weight) * share;

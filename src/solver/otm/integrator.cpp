@@ -207,8 +207,9 @@ void Integrator::averageVolumeChange() {
     for (LocalIndex a = 0; a < model_.nodes.owned; ++a) {
       double m = 0.0, mj = 0.0;
       for (Index k = conn.node_offset[a]; k < conn.node_offset[a + 1]; ++k) {
-        const double N = conn.N[conn.node_entry[k]];
-        const std::array<double, 2>& w = j_weight_[conn.node_point[k]];
+        const Connectivity::NodeSlot slot = conn.node_slot[k];
+        const double N = conn.N[slot.entry];
+        const std::array<double, 2>& w = j_weight_[slot.point];
         m += N * w[0];
         mj += N * w[1];
       }

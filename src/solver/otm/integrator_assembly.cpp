@@ -25,8 +25,9 @@ void assembleNodes(const Connectivity& conn, const PointStore& points, NodeStore
       double m = 0.0;
       Vec3 l = Vec3::Zero(), f = Vec3::Zero();
       for (Index k = conn.node_offset[a]; k < conn.node_offset[a + 1]; ++k) {
-        const Index e = conn.node_entry[k];
-        const PointLoad& load = loads[conn.node_point[k]];
+        const Connectivity::NodeSlot slot = conn.node_slot[k];
+        const Index e = slot.entry;
+        const PointLoad& load = loads[slot.point];
         const double N = conn.N[e];
         m += N * load.mass;
         l += N * load.momentum;

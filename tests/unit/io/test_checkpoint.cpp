@@ -74,8 +74,7 @@ long differences(const otm::Model& a, const otm::Model& b) {
          differing(a.connectivity.node, b.connectivity.node) + differing(a.connectivity.N, b.connectivity.N) +
          differing(a.connectivity.dN, b.connectivity.dN) +
          differing(a.connectivity.node_offset, b.connectivity.node_offset) +
-         differing(a.connectivity.node_entry, b.connectivity.node_entry) +
-         differing(a.connectivity.node_point, b.connectivity.node_point);
+         differing(a.connectivity.node_slot, b.connectivity.node_slot);
 }
 
 class CheckpointTest : public ::testing::Test {
