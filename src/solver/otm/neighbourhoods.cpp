@@ -91,7 +91,7 @@ int Neighbourhoods::gather(const Model& model, LocalIndex p, double scale, bool 
   const double h = spacing_[p];
   const int own = points.body[p];
   const double contact2 = settings_.contact_distance * settings_.contact_distance * h * h;
-  double radius = scale * lme::cutoffRadius(settings_.lme_gamma, h, settings_.lme_tolerance);
+  double radius = scale * (h * cutoff_per_spacing_);
   for (int attempt = 0;; ++attempt) {
     // Seizing contact: another body's nodes count only once that body is close enough, so they
     // are dropped again below unless their body's nearest node lies within the contact distance.
@@ -315,6 +315,7 @@ void Neighbourhoods::update(Model& model) {
   // nodes (a fine debris cloud caught by a coarse wall needs the wall's node spacing). Bodies are
   // contiguous ranges of points; their sums are deterministic whatever the thread count.
   const std::size_t bodies = model.bodies.size();
+  cutoff_per_spacing_ = lme::cutoffRadius(settings_.lme_gamma, 1.0, settings_.lme_tolerance);
   spacing_.resize(static_cast<std::size_t>(np));
 #pragma omp parallel for schedule(static)
   for (LocalIndex p = 0; p < np; ++p) spacing_[p] = points.spacing(p);

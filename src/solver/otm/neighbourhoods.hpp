@@ -89,6 +89,7 @@ class Neighbourhoods {
   std::vector<std::uint32_t> transpose_scratch_;
   std::vector<LocalIndex> caught_;
   std::vector<double> spacing_;          // per point: its support size h this step (a cube root each)
+  double cutoff_per_spacing_ = 0.0;      // the LME cut-off radius over h (a logarithm and a root)
   std::vector<double> body_spacing_;     // mean spacing of each body's intact points
   std::vector<LocalIndex> body_points_;  // and their count
   double search_seconds_ = 0.0, shape_seconds_ = 0.0;
