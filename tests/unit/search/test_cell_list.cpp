@@ -39,6 +39,31 @@ TEST(CellList, MatchesBruteForce) {
   }
 }
 
+// Results come in a fixed order, cell by cell (x fastest, then y, then z) and by slot within a
+// cell, which is what keeps the rows, and so the runs, identical for any thread count. The
+// reference walks the cells one by one; the query scans whole rows of cells and filters them
+// through a bit mask (runs longer than the 64-position chunks and of any length modulo 4 occur
+// at the larger radii).
+TEST(CellList, VisitsInCellThenSlotOrder) {
+  const std::vector<Vec3> x = randomCloud(3000, 5, 1.0);
+  const std::vector<Vec3> queries = randomCloud(100, 13, 1.1);
+  CellList cells;
+  cells.build(x, static_cast<LocalIndex>(x.size()), 0.1);
+  for (double radius : {0.05, 0.1, 0.35, 0.8}) {
+    for (const Vec3& q : queries) {
+      std::vector<LocalIndex> found, expected;
+      cells.forEachWithin(q, radius, [&](LocalIndex a, double) { found.push_back(a); });
+      cells.forEachCellNear(q, radius, [&](long cell) {
+        for (LocalIndex slot = cells.cellBegin(cell); slot < cells.cellEnd(cell); ++slot) {
+          const LocalIndex a = cells.indexAt(slot);
+          if ((x[a] - q).squaredNorm() <= radius * radius) expected.push_back(a);
+        }
+      });
+      ASSERT_EQ(found, expected) << "radius " << radius;
+    }
+  }
+}
+
 // A few far-away positions must not blow the grid up; queries stay correct.
 TEST(CellList, SparseOutliersStayCorrect) {
   std::vector<Vec3> x = randomCloud(500, 3, 1.0);
