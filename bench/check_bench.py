@@ -34,6 +34,8 @@ def main():
             v = p.get(key)
             if not isinstance(v, (int, float)) or not math.isfinite(v) or v <= 0:
                 errors.append(f"{name}: {key} = {v!r}, expected a finite positive number")
+        if not isinstance(p.get("omp_wait_policy"), str) or not p.get("omp_wait_policy"):
+            errors.append(f"{name}: omp_wait_policy = {p.get('omp_wait_policy')!r}, expected the policy's name")
         if p.get("steps") != 10:
             errors.append(f"{name}: {p.get('steps')} steps, expected 10")
         for key in ("phases_s", "phases_us_per_point_step"):
