@@ -175,10 +175,11 @@ nlohmann::json runOne(const BenchProblem& problem, BenchSize size, int steps_wan
 }
 
 void printResult(const nlohmann::json& r) {
-  fmt::print("{} ({}): {} points, {} nodes, {:.1f} neighbours per point, {} steps, {} thread(s), OpenMP wait policy {}\n",
-             r["name"].get<std::string>(), r["size"].get<std::string>(), r["points"].get<long>(),
-             r["nodes"].get<long>(), r["mean_neighbours"].get<double>(), r["steps"].get<long>(),
-             r["threads"].get<int>(), r.value("omp_wait_policy", std::string("default")));
+  fmt::print(
+      "{} ({}): {} points, {} nodes, {:.1f} neighbours per point, {} steps, {} thread(s), OpenMP wait policy {}\n",
+      r["name"].get<std::string>(), r["size"].get<std::string>(), r["points"].get<long>(), r["nodes"].get<long>(),
+      r["mean_neighbours"].get<double>(), r["steps"].get<long>(), r["threads"].get<int>(),
+      r.value("omp_wait_policy", std::string("default")));
   if (r.contains("overrides") && !r["overrides"].empty())
     fmt::print("  with --set {}\n", fmt::join(r["overrides"].get<std::vector<std::string>>(), " --set "));
   fmt::print("  {:.3f} s stepping ({:.2f} s setup): {:.3f} us per point-step wall, {:.3f} us core (x threads)\n",

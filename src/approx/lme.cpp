@@ -146,13 +146,16 @@ Result shapeFunctions(std::span<const Vec3> d, double beta, double h, Vec3& lamb
   if (result.status != Status::converged) return result;
   // J is symmetric positive definite here (checked in the iteration): invert it once.
   // grad N_a = -N_a J^-1 d_a, one component at a time over all nodes (vectorised), then interleaved.
+  // The solve is done, so its arrays hold the components: base and w the first two, and x the
+  // third, computed last because it reads x.
   const Mat3 j_inverse = J.inverse();
   const Eigen::Map<const Eigen::ArrayXd> n_a(N.data(), offsets.n);
   Offsets& o = offsets;
-  o.base = -n_a * (j_inverse(0, 0) * o.x + j_inverse(0, 1) * o.y + j_inverse(0, 2) * o.z);
-  o.w = -n_a * (j_inverse(1, 0) * o.x + j_inverse(1, 1) * o.y + j_inverse(1, 2) * o.z);
-  o.x = -n_a * (j_inverse(2, 0) * o.x + j_inverse(2, 1) * o.y + j_inverse(2, 2) * o.z);
-  for (Eigen::Index a = 0; a < o.n; ++a) dN[static_cast<std::size_t>(a)] = Vec3(o.base[a], o.w[a], o.x[a]);
+  Offsets::Array &grad_x = o.base, &grad_y = o.w, &grad_z = o.x;
+  grad_x = -n_a * (j_inverse(0, 0) * o.x + j_inverse(0, 1) * o.y + j_inverse(0, 2) * o.z);
+  grad_y = -n_a * (j_inverse(1, 0) * o.x + j_inverse(1, 1) * o.y + j_inverse(1, 2) * o.z);
+  grad_z = -n_a * (j_inverse(2, 0) * o.x + j_inverse(2, 1) * o.y + j_inverse(2, 2) * o.z);
+  for (Eigen::Index a = 0; a < o.n; ++a) dN[static_cast<std::size_t>(a)] = Vec3(grad_x[a], grad_y[a], grad_z[a]);
   return result;
 }
 

@@ -122,8 +122,8 @@ void CellList::forEachWithin(const Vec3& q, double radius, F&& f) const {
           const __m256d dx = _mm256_sub_pd(_mm256_loadu_pd(x + i), qx);
           const __m256d dy = _mm256_sub_pd(_mm256_loadu_pd(y + i), qy);
           const __m256d dz = _mm256_sub_pd(_mm256_loadu_pd(z + i), qz);
-          const __m256d d = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)),
-                                          _mm256_mul_pd(dz, dz));
+          const __m256d d =
+              _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz));
           _mm256_storeu_pd(d2 + i, d);
           hits |= static_cast<std::uint64_t>(_mm256_movemask_pd(_mm256_cmp_pd(d, r2v, _CMP_LE_OQ))) << i;
         }

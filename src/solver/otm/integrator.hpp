@@ -86,8 +86,8 @@ class Integrator {
   std::vector<double> j_point_, j_node_;  // det(dF) per point (after averaging), averaged per node
   // Per point, the weights of the volume average: m_p and m_p det(dF) (zero for debris).
   std::vector<std::array<double, 2>> j_weight_;
-  std::vector<PointLoad> loads_;          // assembly scratch, one record per point
-  double dt_step_ = 0.0;                  // length of the step in progress
+  std::vector<PointLoad> loads_;  // assembly scratch, one record per point
+  double dt_step_ = 0.0;          // length of the step in progress
   PhaseTimers timers_;
   double time_ = 0.0;
   double dt_last_ = 0.0;  // dt_k: the step just taken (0 before the first)

@@ -169,8 +169,7 @@ int Neighbourhoods::gatherDebris(const Model& model, LocalIndex p, Scratch& s) c
     }
     if (carrier < 0) return 0;
   }
-  const double cutoff =
-      lme::cutoffRadius(settings_.lme_gamma, debrisSpacing(p, carrier), settings_.lme_tolerance);
+  const double cutoff = lme::cutoffRadius(settings_.lme_gamma, debrisSpacing(p, carrier), settings_.lme_tolerance);
   for (const auto& [a, d2] : s.candidates)
     if (nodes.body[a] == carrier && d2 <= cutoff * cutoff) s.node.push_back(a);
   if (static_cast<int>(s.node.size()) < settings_.min_neighbours) s.node.clear();
@@ -241,8 +240,7 @@ void Neighbourhoods::retryFailedPoints(Model& model) {
       // of nodes (against a rigid wall, say) sees the nodes beyond the layer with weights
       // exp(-gamma (d/h)^2) that vanish at gamma = 4, and its covariance turns singular.
       r = shapeFunctionsAt(model, p, s.node, std::span<double>(s.N.data() + start[k], size),
-                           std::span<Vec3>(s.dN.data() + start[k], size), s, spacing_[p],
-                           std::pow(0.5, attempt - 1));
+                           std::span<Vec3>(s.dN.data() + start[k], size), s, spacing_[p], std::pow(0.5, attempt - 1));
       if (r.status == lme::Status::converged) break;
     }
     s.rows.insert(s.rows.end(), s.node.begin(), s.node.begin() + n);
