@@ -18,7 +18,7 @@ double angleBetween(const Vec3& a, const Vec3& b) {
 
 // The points (all mirror images) of `bodies` behind the reference plate's original rear face.
 struct CloudSample {
-  Vec3 x;
+  Vec3 x, v;
   double mass;
   bool simulated;  // image 0: counts as a simulated point
 };
@@ -31,7 +31,8 @@ std::vector<CloudSample> cloudSamples(const otm::Model& model, const std::vector
     for (LocalIndex p = body.point_begin; p < body.point_end; ++p) {
       for (int mask = 0; mask < mirror.images(); ++mask) {
         const Vec3 x = mirror.image(model.points.x[p], mask);
-        if (ref.normal.dot(x) > ref.rear_face) samples.push_back({x, model.points.mass[p], mask == 0});
+        if (ref.normal.dot(x) > ref.rear_face)
+          samples.push_back({x, mirror.image(model.points.v[p], mask), model.points.mass[p], mask == 0});
       }
     }
   }
@@ -57,11 +58,16 @@ CloudMeasurement measureCloud(const std::vector<CloudSample>& samples, const Vec
   if (samples.empty()) return cloud;
   double lo = std::numeric_limits<double>::infinity();
   double hi = -lo;
-  std::vector<std::pair<double, double>> axial_mass, radial_mass;
+  std::vector<std::pair<double, double>> axial_mass, radial_mass, axial_speed, radial_speed;
+  double axial_momentum = 0.0;
   for (const CloudSample& s : samples) {
     const Vec3 d = s.x - origin;
     const double axial = e.dot(d);
-    const double radial = (d - axial * e).norm();
+    const Vec3 off_axis = d - axial * e;
+    const double radial = off_axis.norm();
+    axial_momentum += s.mass * e.dot(s.v);
+    axial_speed.emplace_back(e.dot(s.v), s.mass);
+    radial_speed.emplace_back(radial > 0.0 ? off_axis.dot(s.v) / radial : 0.0, s.mass);
     cloud.mass += s.mass;
     cloud.points += s.simulated;
     lo = std::min(lo, axial);
@@ -78,6 +84,9 @@ CloudMeasurement measureCloud(const std::vector<CloudSample>& samples, const Vec
   cloud.bulk_radius = weightedQuantile(radial_mass, 0.95);
   const double bulk_length = cloud.bulk_leading_edge - weightedQuantile(axial_mass, 0.05);
   cloud.bulk_length_to_width = cloud.bulk_radius > 0.0 ? bulk_length / (2.0 * cloud.bulk_radius) : 0.0;
+  cloud.mean_axial_speed = axial_momentum / cloud.mass;
+  cloud.bulk_axial_speed = weightedQuantile(axial_speed, 0.95);
+  cloud.bulk_radial_speed = weightedQuantile(radial_speed, 0.95);
   // The front: the leading tenth of the cloud's length, whose mass centre gives the direction
   // the cloud travels (Piekutowski's "leading edge" of the debris cloud).
   const double front_start = hi - 0.1 * cloud.length;

@@ -82,7 +82,13 @@ struct CloudMeasurement {
   double bulk_leading_edge = 0.0;     // m, axial distance that 95 % of the mass lies behind
   double bulk_radius = 0.0;           // m, distance from the shot line within which 95 % lies
   double bulk_length_to_width = 0.0;  // (5 % to 95 % axial extent) / (2 bulk_radius)
-  Vec3 front_centre = Vec3::Zero();   // mass centre of the leading 10 % of the length
+  // How fast it travels and spreads (Piekutowski's normalised velocities, docs/analysis.md §5):
+  // the mass-weighted mean velocity along the shot line, the axial velocity that 5 % of the mass
+  // exceeds (the bulk front) and the radial velocity (away from the shot line) that 5 % exceeds.
+  double mean_axial_speed = 0.0;   // m/s
+  double bulk_axial_speed = 0.0;   // m/s
+  double bulk_radial_speed = 0.0;  // m/s
+  Vec3 front_centre = Vec3::Zero();  // mass centre of the leading 10 % of the length
   double front_deflection = 0.0;      // rad, angle of the front centre from the shot line
   double front_normal_angle = 0.0;    // rad, angle of the front centre from the plate normal
 };

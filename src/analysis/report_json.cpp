@@ -101,6 +101,9 @@ json cloudJson(const CloudMeasurement& c) {
           {"bulk_leading_edge_m", c.bulk_leading_edge},
           {"bulk_radius_m", c.bulk_radius},
           {"bulk_length_to_width", c.bulk_length_to_width},
+          {"mean_axial_speed_m_per_s", c.mean_axial_speed},
+          {"bulk_axial_speed_m_per_s", c.bulk_axial_speed},
+          {"bulk_radial_speed_m_per_s", c.bulk_radial_speed},
           {"front_centre_m", vec(c.front_centre)},
           {"front_deflection_deg", c.front_deflection * deg},
           {"front_normal_angle_deg", c.front_normal_angle * deg}};

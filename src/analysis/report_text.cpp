@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <numbers>
+#include <string>
 
 namespace kessler::analysis {
 namespace {
@@ -42,6 +43,12 @@ std::string formatReport(const Report& r) {
                           c.mass * 1e3));
     line(out, fmt::format("  {:<20} 95% of its mass: leading edge {:.1f} mm, radius {:.1f} mm, L/W {:.2f}", "",
                           c.bulk_leading_edge * mm, c.bulk_radius * mm, c.bulk_length_to_width));
+    const double v = r.geometry.impact_speed;
+    line(out, fmt::format("  {:<20} speeds: mean axial {:.2f} km/s, bulk front {:.2f} km/s, bulk radial {:.2f} km/s{}",
+                          "", c.mean_axial_speed * 1e-3, c.bulk_axial_speed * 1e-3, c.bulk_radial_speed * 1e-3,
+                          v > 0.0 ? fmt::format(" ({:.2f} / {:.2f} / {:.2f} of the impact speed)",
+                                                c.mean_axial_speed / v, c.bulk_axial_speed / v, c.bulk_radial_speed / v)
+                                  : std::string()));
   }
   if (r.ejecta.points > 0) {
     line(out, fmt::format("  back-splash          height {:.1f} mm, cone {:.0f}-{:.0f} deg from the normal, {:.3f} g",

@@ -167,6 +167,43 @@ TEST(Cloud, BulkMeasuresIgnoreAFewFastPoints) {
   EXPECT_NEAR(c.bulk_length_to_width, (105.0 - 6.0) / (2 * 10.5), 1e-9);
 }
 
+// A cloud expanding about a centre moving along the shot line: point k at radius r_k moves with
+// the centre's speed u plus w r_k / R along the radius, so the speeds are known point by point.
+// The quarter model with its mirror images gives the same speeds as the full one.
+TEST(Cloud, SpeedsAreMassQuantilesOfTheVelocities) {
+  const double u = 4000.0, w = 1000.0, R = 20 * mm;
+  for (const bool quarter : {false, true}) {
+    PlateModel m = plateModel();
+    std::vector<Vec3> x, v;
+    for (int k = 1; k <= 110; ++k) {
+      const double r = R * k / 110.0, phi = quarter ? 0.01 * k : 0.7 * k;  // quarter: x, y > 0
+      const Vec3 radial(std::cos(phi), std::sin(phi), 0.0);
+      x.push_back(Vec3(0, 0, -12 * mm) + r * radial);
+      v.push_back(u * down + (w * r / R) * radial);
+    }
+    const int debris = addCloud(m.model, "projectile", x, 1e-9);
+    const BodyInfo& body = m.model.bodies[debris];
+    for (LocalIndex p = body.point_begin; p < body.point_end; ++p) m.model.points.v[p] = v[p - body.point_begin];
+    m.geometry.projectile_bodies = {debris};
+    if (quarter) m.geometry.symmetry_axes = {0, 1};
+    const CloudMeasurement c = measureClouds(m.model, m.geometry)[0];
+    EXPECT_NEAR(c.mean_axial_speed, u, 1e-9) << "quarter " << quarter;
+    EXPECT_NEAR(c.bulk_axial_speed, u, 1e-9) << "quarter " << quarter;
+    // 110 equal masses (4 images each in the quarter model): 95 % is reached at the 105th radius.
+    EXPECT_NEAR(c.bulk_radial_speed, w * 105.0 / 110.0, 1e-9) << "quarter " << quarter;
+  }
+  // A fast point along the shot line: the mean moves with it, the 95 % front does not.
+  PlateModel m = plateModel();
+  std::vector<Vec3> x(40, Vec3(0, 0, -10 * mm));
+  const int debris = addCloud(m.model, "projectile", x, 1e-9, testing::aluminium(), u * down);
+  m.model.points.v[m.model.bodies[debris].point_begin] = 3 * u * down;
+  m.geometry.projectile_bodies = {debris};
+  const CloudMeasurement c = measureClouds(m.model, m.geometry)[0];
+  EXPECT_NEAR(c.mean_axial_speed, u * (39.0 + 3.0) / 40.0, 1e-9);
+  EXPECT_NEAR(c.bulk_axial_speed, u, 1e-9);
+  EXPECT_NEAR(c.bulk_radial_speed, 0.0, 1e-12);
+}
+
 TEST(Cloud, ObliqueFrontDeflection) {
   PlateModel m = plateModel();
   const Vec3 shot(std::sin(30 * deg), 0, -std::cos(30 * deg));
