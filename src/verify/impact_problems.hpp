@@ -24,6 +24,8 @@ Outcome flyerPlate();
 struct TaylorBarResult {
   double length = 0.0;            // final length, m
   double footprint_radius = 0.0;  // radius of the impact face, m
+  // For the resolution study: the outermost material point within one mesh size of the wall, m.
+  double point_footprint_radius = 0.0;
   long steps = 0, points = 0;
   // The time step at the start and the end, and what limits it at the end (the point of smallest
   // h0 lambda_min / c: its smallest principal stretch and position) against the smallest distance

@@ -59,6 +59,9 @@ TaylorBarResult runTaylorBar(double mesh_size, double cfl) {
   r.dt_initial = integrator.initialStep();
   r.dt_final = integrator.nextStep();
   const PointStore& points = model.points;
+  for (LocalIndex q = 0; q < points.owned; ++q)
+    if (points.x[q][2] < mesh_size)
+      r.point_footprint_radius = std::max(r.point_footprint_radius, std::hypot(points.x[q][0], points.x[q][1]));
   double limit = std::numeric_limits<double>::infinity();
   for (LocalIndex q = 0; q < points.owned; ++q) {
     if (points.eroded[q] || otm::stepLength(points, q) / points.sound_speed[q] >= limit) continue;
