@@ -1,7 +1,8 @@
 // Resolution study of the copper Taylor bar (docs/validation.md): runs verify::runTaylorBar at
-// each mesh size given in mm on the command line (`--cfl X` first changes the factor on the time
-// step, default 0.3) and prints points, steps, wall time, final length and footprint radius. Not a
-// test: the sizes near the 0.8 mm benchmark take minutes.
+// each mesh size given in mm on the command line and prints points, steps, wall time, final length
+// and footprint radius. Options first: `--cfl X` changes the factor on the time step (default
+// 0.3), `--no-volume-averaging` turns solver.volume_averaging off. Not a test: the sizes near the
+// 0.8 mm benchmark take minutes.
 #include "core/error.hpp"
 #include "verify/impact_problems.hpp"
 
@@ -15,17 +16,26 @@ int main(int argc, char** argv) {
   fmt::print("{:>8} {:>5} {:>7} {:>7} {:>9} {:>11} {:>11}\n", "mesh_mm", "cfl", "points", "steps", "wall_s",
              "length_mm", "radius_mm");
   double cfl = 0.3;
+  bool volume_averaging = true;
   int first = 1;
-  if (argc > 2 && std::string(argv[1]) == "--cfl") {
-    cfl = std::atof(argv[2]);
-    first = 3;
+  for (;;) {
+    if (argc > first + 1 && std::string(argv[first]) == "--cfl") {
+      cfl = std::atof(argv[first + 1]);
+      first += 2;
+    } else if (argc > first && std::string(argv[first]) == "--no-volume-averaging") {
+      volume_averaging = false;
+      first += 1;
+    } else {
+      break;
+    }
   }
+  if (!volume_averaging) fmt::print("volume averaging off\n");
   for (int i = first; i < argc; ++i) {
     const double mesh = std::atof(argv[i]) * 1e-3;
     const auto start = std::chrono::steady_clock::now();
     kessler::verify::TaylorBarResult r;
     try {
-      r = kessler::verify::runTaylorBar(mesh, cfl);
+      r = kessler::verify::runTaylorBar(mesh, cfl, volume_averaging);
     } catch (const kessler::NumericalError& e) {  // a failed size says why, and the study goes on
       fmt::print("{:8.3f} {:5.2f} stopped: {}\n", 1e3 * mesh, cfl, e.what());
       std::fflush(stdout);

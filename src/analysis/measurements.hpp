@@ -85,12 +85,12 @@ struct CloudMeasurement {
   // How fast it travels and spreads (Piekutowski's normalised velocities, docs/analysis.md §5):
   // the mass-weighted mean velocity along the shot line, the axial velocity that 5 % of the mass
   // exceeds (the bulk front) and the radial velocity (away from the shot line) that 5 % exceeds.
-  double mean_axial_speed = 0.0;   // m/s
-  double bulk_axial_speed = 0.0;   // m/s
-  double bulk_radial_speed = 0.0;  // m/s
+  double mean_axial_speed = 0.0;     // m/s
+  double bulk_axial_speed = 0.0;     // m/s
+  double bulk_radial_speed = 0.0;    // m/s
   Vec3 front_centre = Vec3::Zero();  // mass centre of the leading 10 % of the length
-  double front_deflection = 0.0;      // rad, angle of the front centre from the shot line
-  double front_normal_angle = 0.0;    // rad, angle of the front centre from the plate normal
+  double front_deflection = 0.0;     // rad, angle of the front centre from the shot line
+  double front_normal_angle = 0.0;   // rad, angle of the front centre from the plate normal
 };
 
 // One cloud per projectile body and for the reference plate's body, then "all" of them.

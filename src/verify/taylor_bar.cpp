@@ -15,7 +15,7 @@
 
 namespace kessler::verify {
 
-TaylorBarResult runTaylorBar(double mesh_size, double cfl) {
+TaylorBarResult runTaylorBar(double mesh_size, double cfl, bool volume_averaging) {
   const double E = 117e9, nu = 0.35, rho = 8930.0;
   const double radius = 3.2e-3, length = 32.4e-3, speed = 227.0;
   ImpactMaterialParameters p;
@@ -43,6 +43,7 @@ TaylorBarResult runTaylorBar(double mesh_size, double cfl) {
   otm::Settings settings;
   settings.end_time = 80e-6;
   settings.cfl = cfl;
+  settings.volume_averaging = volume_averaging;
   settings.walls.push_back(otm::RigidWall{2, 0.0, 1});
   otm::Integrator integrator(model, settings);
   integrator.initialise();
