@@ -10,6 +10,9 @@
 #   - the debris cloud's leading edge behind the plate has moved at no more than 1.1 times the
 #     impact speed (the cloud front of Al on Al at 6 km/s travels at ~0.9-0.95 v) and at least
 #     0.5 times it (the sphere is only 20% decelerated by a plate of a fifth of its diameter);
+#   - the cloud's bulk front speed (the axial speed 5% of its mass exceeds) lies between 0.5 and
+#     1.0 times the impact speed: no faster than the free surface of a symmetric Al-on-Al impact
+#     after release (2 u_p = v), no slower than the bound on the leading edge above;
 #   - with free plate edges, momentum along the shot is conserved to 1% (contact and erosion
 #     neither make nor lose momentum).
 set -euo pipefail
@@ -45,6 +48,10 @@ lo, hi = 0.5 * v * flight - 2e-3, 1.1 * v * flight  # the rear face is 2 mm belo
 print(f"cloud leading edge {edge*1e3:.2f} mm behind the rear face at t = {t*1e6:.2f} us; bounds [{lo*1e3:.2f}, {hi*1e3:.2f}] mm")
 if not (lo <= edge <= hi):
     failures.append(f"cloud leading edge {edge*1e3:.2f} mm outside [{lo*1e3:.2f}, {hi*1e3:.2f}] mm")
+front = cloud["bulk_axial_speed_m_per_s"]
+print(f"cloud bulk front speed {front:.0f} m/s = {front / v:.3f} v; bounds [0.5, 1.0] v")
+if not (0.5 * v <= front <= v):
+    failures.append(f"cloud bulk front speed {front:.0f} m/s outside [{0.5 * v:.0f}, {v:.0f}] m/s")
 p0 = s["energy"]["initial"]["momentum_kg_m_s"][2]
 p1 = s["energy"]["final"]["momentum_kg_m_s"][2]
 print(f"momentum z: {p0:.6g} -> {p1:.6g} kg m/s")
