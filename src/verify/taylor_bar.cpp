@@ -104,11 +104,13 @@ Outcome taylorBarAt(const std::string& name, double mesh_size) {
   o.tolerance = 0.03;
   o = compare(o);
   o.passed = o.passed && e_radius <= 0.03;
+  // The outermost material point by the wall is printed beside the metric, not judged: the node
+  // metric scatters about it by up to half a spacing (docs/validation.md, Taylor bar).
   o.note = fmt::format(
-      "footprint radius {:.3f} mm vs {:.2f}-{:.2f} ({:.1f}% outside, tol 3%); mesh {} mm, {} points, "
-      "{} steps",
-      1e3 * r.footprint_radius, 1e3 * radius_low, 1e3 * radius_high, 100 * e_radius, 1e3 * mesh_size, r.points,
-      r.steps);
+      "footprint radius {:.3f} mm vs {:.2f}-{:.2f} ({:.1f}% outside, tol 3%; outermost material point by the "
+      "wall at {:.3f} mm, not judged); mesh {} mm, {} points, {} steps",
+      1e3 * r.footprint_radius, 1e3 * radius_low, 1e3 * radius_high, 100 * e_radius, 1e3 * r.point_footprint_radius,
+      1e3 * mesh_size, r.points, r.steps);
   return o;
 }
 
