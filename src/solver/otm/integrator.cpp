@@ -49,6 +49,15 @@ void Integrator::restore(const IntegratorState& state) {
 void Integrator::step() {
   const double dt = std::min(dt_next_, settings_.end_time - time_);
   KESSLER_VERIFY(dt > 0.0, "step called after the end time");
+  try {
+    advance(dt);
+  } catch (const NumericalError& e) {
+    // Failures inside a step (LME, inverted points) happen before the step count moves on.
+    throw NumericalError(fmt::format("step {}, t = {:.6g} s: {}", steps_ + 1, time_, e.what()));
+  }
+}
+
+void Integrator::advance(double dt) {
   {
     ScopedPhase phase(timers_, "assembly");
     assembleNodes();
@@ -287,9 +296,8 @@ Energies Integrator::energies() const {
 void Integrator::failAtPoint(LocalIndex p, const std::string& what) const {
   const PointStore& points = model_.points;
   const Vec3& x = points.x[p];
-  throw NumericalError(
-      fmt::format("step {}, t = {:.6g} s: material point {} of body '{}' at ({:.6g}, {:.6g}, {:.6g}) m: {}", steps_ + 1,
-                  time_, points.id[p], model_.bodies[points.body[p]].name, x[0], x[1], x[2], what));
+  throw NumericalError(fmt::format("material point {} of body '{}' at ({:.6g}, {:.6g}, {:.6g}) m: {}", points.id[p],
+                                   model_.bodies[points.body[p]].name, x[0], x[1], x[2], what));
 }
 
 }  // namespace kessler::otm

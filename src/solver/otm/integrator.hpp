@@ -48,7 +48,8 @@ class Integrator {
   // has been restored; the run then proceeds bitwise as it would have without interruption.
   void restore(const IntegratorState& state);
   IntegratorState state() const { return {time_, dt_last_, dt_next_, dt_initial_, steps_}; }
-  // Advances one step of length nextStep() (clipped to end at settings.end_time).
+  // Advances one step of length nextStep() (clipped to end at settings.end_time). A numerical
+  // failure throws NumericalError with a message that starts with the step and time.
   void step();
 
   bool finished() const { return time_ >= settings_.end_time * (1.0 - 1e-12); }
@@ -64,6 +65,7 @@ class Integrator {
   const Settings& settings() const { return settings_; }
 
  private:
+  void advance(double dt);  // the body of step()
   void assembleNodes();
   void updateNodes(double dt, double dt_average);
   void updatePoints();
