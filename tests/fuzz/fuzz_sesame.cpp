@@ -11,19 +11,32 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <system_error>
 
 namespace {
 
-std::string scratchFile() {
-  const char* dir = std::getenv("TMPDIR");
-  const std::filesystem::path base = dir != nullptr && *dir != '\0' ? dir : "/tmp";
-  return (base / ("kessler_fuzz_sesame_" + std::to_string(getpid()) + ".ses")).string();
-}
+// The process's scratch file, removed when the fuzzer exits (a run of many short fuzz jobs
+// otherwise leaves one file per process in the temporary folder).
+struct ScratchFile {
+  std::string path;
+  ScratchFile() {
+    const char* dir = std::getenv("TMPDIR");
+    const std::filesystem::path base = dir != nullptr && *dir != '\0' ? dir : "/tmp";
+    path = (base / ("kessler_fuzz_sesame_" + std::to_string(getpid()) + ".ses")).string();
+  }
+  ~ScratchFile() {
+    std::error_code ignored;
+    std::filesystem::remove(path, ignored);
+  }
+  ScratchFile(const ScratchFile&) = delete;
+  ScratchFile& operator=(const ScratchFile&) = delete;
+};
 
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  static const std::string file = scratchFile();
+  static const ScratchFile scratch;
+  const std::string& file = scratch.path;
   {
     std::ofstream out(file, std::ios::binary | std::ios::trunc);
     out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
