@@ -1,5 +1,6 @@
 // `kessler eos-table --eos MODEL [parameters] [grid] FILE`: tabulates a Mie-Gruneisen, polynomial
-// or Tillotson EOS on a (rho, T) grid with e = c_v (T - T0) and writes it as SESAME ASCII.
+// or Tillotson EOS on a (rho, T) grid with e = c_v (T - T0) and writes it as SESAME ASCII (not the
+// ideal gas: see eos::tabulate).
 // Quantities accept units ("5.24 km/s", "75.2 GPa", "2.7 g/cm^3"); bare numbers are SI.
 #include "app/eos_table_command.hpp"
 
@@ -132,6 +133,13 @@ void addEosTableCommand(CLI::App& app) {
   cmd->add_option("file", args->output, "SESAME file to write")->required();
   cmd->add_option("--eos", args->model, "Model to tabulate")
       ->required()
+      ->check([](const std::string& model) -> std::string {
+        // Before the list, so that asking for the gas says why it is not one of the choices.
+        if (model != "ideal-gas") return "";
+        return "the ideal-gas EOS is not tabulated: it is exact and cheap as it stands, and a table's c^2 floor "
+               "would give the cold gas a sound speed (docs/eos.md); use it in the deck as "
+               "`eos: { model: ideal-gas, gamma: ... }`";
+      })
       ->check(CLI::IsMember({"mie-gruneisen", "polynomial", "tillotson"}));
   auto quantityOption = [&](const std::string& name, const std::string& help) {
     cmd->add_option_function<std::string>(

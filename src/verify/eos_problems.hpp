@@ -10,5 +10,6 @@ Outcome eosMieGruneisen();
 Outcome eosPolynomial();
 Outcome eosTillotson();
 Outcome eosTabular();
+Outcome eosIdealGas();
 
 }  // namespace kessler::verify

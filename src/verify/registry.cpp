@@ -19,6 +19,8 @@ const std::vector<Problem>& problems() {
       {"eos-polynomial", "polynomial EOS swept against its formula; c^2 against finite differences", eosPolynomial},
       {"eos-tillotson", "Tillotson EOS swept against its formula; c^2 against finite differences", eosTillotson},
       {"eos-tabular", "SESAME table of a Mie-Gruneisen EOS against the analytic EOS", eosTabular},
+      {"eos-ideal-gas", "ideal-gas EOS swept against its formula, exactly 0 at e = 0; c^2 against finite differences",
+       eosIdealGas},
       {"radial-return", "log-strain radial return along uniaxial-strain and pure-shear paths against analytic answers",
        radialReturn},
       {"adiabatic-heating", "temperature rise of plastic work in isochoric shear against the closed form",

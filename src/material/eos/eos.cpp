@@ -14,9 +14,11 @@ const char* modelName(const Eos& eos) {
           return "polynomial";
         } else if constexpr (std::is_same_v<Model, Tillotson>) {
           return "tillotson";
-        } else {
-          static_assert(std::is_same_v<Model, Tabular>, "a model of the Eos variant has no name");
+        } else if constexpr (std::is_same_v<Model, Tabular>) {
           return "tabular";
+        } else {
+          static_assert(std::is_same_v<Model, IdealGas>, "a model of the Eos variant has no name");
+          return "ideal-gas";
         }
       },
       eos);

@@ -24,8 +24,11 @@ double referenceModulus(const Eos& eos) {
           return model.parameters().k1;
         } else if constexpr (std::is_same_v<Model, Tillotson>) {
           return model.parameters().A;
-        } else {
+        } else if constexpr (std::is_same_v<Model, Tabular>) {
           return model.table().bulk_modulus;
+        } else {
+          static_assert(std::is_same_v<Model, IdealGas>, "a model of the Eos variant has no reference modulus");
+          return 0.0;  // never written: tabulate() refuses the ideal gas
         }
       },
       eos);
@@ -53,6 +56,13 @@ SesameTable tabulate(const Eos& eos, const TableGrid& grid, double specific_heat
   require(std::isfinite(specific_heat) && specific_heat > 0.0, "specific_heat", "positive", specific_heat);
   require(std::isfinite(temperature0) && temperature0 >= 0.0, "T0", "non-negative", temperature0);
   require(material_id > 0 && material_id <= 999999, "material_id", "between 1 and 999999", material_id);
+  // A table read back floors c^2 against B0 or its largest |P| (docs/eos.md, "Floors"): the cold
+  // gas, whose c^2 is exactly 0 at e = 0 (the Noh problem's p0 = 0), would gain a sound speed. The
+  // analytic law is exact and cheap, so there is nothing a table would add.
+  if (std::holds_alternative<IdealGas>(eos))
+    throw InputError(
+        "eos table: the ideal-gas EOS is not tabulated (a table's c^2 floor would give the cold gas a sound "
+        "speed it does not have); use it directly as `eos: { model: ideal-gas, gamma: ... }`");
 
   SesameTable t;
   t.material_id = material_id;

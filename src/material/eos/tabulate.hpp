@@ -19,9 +19,9 @@ struct TableGrid {
   void check() const;  // throws kessler::InputError naming the bad entry
 };
 
-// Throws kessler::InputError for a bad grid, specific heat or T0, and the model's
-// kessler::NumericalError for a grid point it cannot evaluate (e.g. beyond the Mie-Gruneisen
-// compression limit).
+// Throws kessler::InputError for a bad grid, specific heat or T0, or an ideal-gas EOS (not
+// tabulated, docs/eos.md), and the model's kessler::NumericalError for a grid point it cannot
+// evaluate (e.g. beyond the Mie-Gruneisen compression limit).
 SesameTable tabulate(const Eos& eos, const TableGrid& grid, double specific_heat, double temperature0,
                      int material_id = 1);
 

@@ -96,6 +96,19 @@ TEST(EosConsistency, Tillotson) {
   EXPECT_LT(w.dp_de, 1e-6);
 }
 
+TEST(EosConsistency, IdealGas) {
+  // No floor (K0 = 0): only e = 0, where c^2 = 0, is left out. With energy_scale 1 J/kg the energy
+  // stencil stays above 0, where the law clamps e.
+  const IdealGas eos({.density = 1.0, .gamma = 5.0 / 3.0});
+  std::vector<double> energies = logRange(1.0, 1e7, 50);
+  energies.insert(energies.begin(), 0.0);
+  const Worst w =
+      fdCheck(eos, 0.0, logRange(1e-3, 1e3, 60), energies, 1.0, [](double, double, double, double) { return false; });
+  EXPECT_EQ(w.checked, 60 * 50);
+  EXPECT_LT(w.c2, 1e-6);
+  EXPECT_LT(w.dp_de, 1e-6);
+}
+
 TEST(EosConsistency, TabularInsideItsCells) {
   // Cell interiors only: the interpolant's derivatives jump on grid lines. With the caloric
   // mapping e = c_v (T - T0) the temperature cell of a given e is the same at every density.

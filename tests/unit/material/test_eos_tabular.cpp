@@ -119,5 +119,15 @@ TEST_F(EosTabular, TabulateChecksItsGrid) {
   EXPECT_THROW(tabulate(MieGruneisen(al6061), bad, cv, t0), NumericalError);
 }
 
+TEST_F(EosTabular, TabulateRefusesTheIdealGas) {
+  // Read back, a table floors c^2 (docs/eos.md): the cold gas would gain a sound speed it lacks.
+  try {
+    tabulate(IdealGas({.density = 1.0, .gamma = 5.0 / 3.0}), grid, 3116.0, 0.0);
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_TRUE(std::string(e.what()).starts_with("eos table: the ideal-gas EOS is not tabulated")) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace kessler::eos
