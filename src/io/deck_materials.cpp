@@ -29,7 +29,8 @@ namespace keys = material_keys;
 static_assert(std::is_same_v<std::variant_alternative_t<0, eos::Eos>, eos::MieGruneisen> &&
                   std::is_same_v<std::variant_alternative_t<1, eos::Eos>, eos::Polynomial> &&
                   std::is_same_v<std::variant_alternative_t<2, eos::Eos>, eos::Tillotson> &&
-                  std::is_same_v<std::variant_alternative_t<3, eos::Eos>, eos::Tabular>,
+                  std::is_same_v<std::variant_alternative_t<3, eos::Eos>, eos::Tabular> &&
+                  std::is_same_v<std::variant_alternative_t<4, eos::Eos>, eos::IdealGas>,
               "material_keys::eos_models follows the order of eos::Eos");
 static_assert(std::is_same_v<std::variant_alternative_t<0, strength::Yield>, strength::NoStrength> &&
                   std::is_same_v<std::variant_alternative_t<1, strength::Yield>, strength::LinearHardening> &&
@@ -171,7 +172,8 @@ eos::Eos parseEos(const MapField& material, const ImpactMaterialParameters* base
   const eos::Eos* same = base ? &base->eos : nullptr;
   if (index == 0) return readModel(*block, keys::mie_gruneisen, std::get_if<eos::MieGruneisen>(same), setDensity);
   if (index == 1) return readModel(*block, keys::polynomial, std::get_if<eos::Polynomial>(same), setDensity);
-  return readModel(*block, keys::tillotson, std::get_if<eos::Tillotson>(same), setDensity);
+  if (index == 2) return readModel(*block, keys::tillotson, std::get_if<eos::Tillotson>(same), setDensity);
+  return readModel(*block, keys::ideal_gas, std::get_if<eos::IdealGas>(same), setDensity);
 }
 
 strength::Yield parseStrength(const MapField& material, const ImpactMaterialParameters* base) {

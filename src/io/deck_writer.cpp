@@ -81,6 +81,8 @@ void impactMaterial(YAML::Emitter& out, const MaterialConfig& material) {
     block(out, "eos", eos_model, polynomial->parameters(), keys::polynomial);
   else if (const auto* tillotson = std::get_if<eos::Tillotson>(&p.eos))
     block(out, "eos", eos_model, tillotson->parameters(), keys::tillotson);
+  else if (const auto* gas = std::get_if<eos::IdealGas>(&p.eos))
+    block(out, "eos", eos_model, gas->parameters(), keys::ideal_gas);
   else
     tabularEos(out, std::get<eos::Tabular>(p.eos));
 

@@ -19,7 +19,7 @@ struct Key {
 };
 
 namespace u = units;
-using eos::MieGruneisenParameters, eos::PolynomialParameters, eos::TillotsonParameters;
+using eos::IdealGasParameters, eos::MieGruneisenParameters, eos::PolynomialParameters, eos::TillotsonParameters;
 using strength::JohnsonCookDamageParameters, strength::JohnsonCookParameters, strength::LinearHardeningParameters,
     strength::PowerLawParameters;
 
@@ -47,6 +47,10 @@ inline constexpr Key<TillotsonParameters> tillotson[] = {
     {"beta", u::dimensionless, &TillotsonParameters::beta, true, ""},
     {"E_iv", u::specific_energy, &TillotsonParameters::E_iv, true, "J/kg"},
     {"E_cv", u::specific_energy, &TillotsonParameters::E_cv, true, "J/kg"},
+};
+
+inline constexpr Key<IdealGasParameters> ideal_gas[] = {
+    {"gamma", u::dimensionless, &IdealGasParameters::gamma, true, "ratio of specific heats c_p/c_v"},
 };
 
 inline constexpr Key<PowerLawParameters> power_law[] = {
@@ -109,6 +113,7 @@ inline constexpr Key<ViscosityParameters> viscosity[] = {
 static_assert(sizeof(MieGruneisenParameters) == (std::size(mie_gruneisen) + 1) * sizeof(double));
 static_assert(sizeof(PolynomialParameters) == (std::size(polynomial) + 1) * sizeof(double));
 static_assert(sizeof(TillotsonParameters) == (std::size(tillotson) + 1) * sizeof(double));
+static_assert(sizeof(IdealGasParameters) == (std::size(ideal_gas) + 1) * sizeof(double));
 static_assert(sizeof(PowerLawParameters) == std::size(power_law) * sizeof(double));
 static_assert(sizeof(JohnsonCookParameters) == std::size(johnson_cook) * sizeof(double));
 static_assert(sizeof(LinearHardeningParameters) == std::size(linear_hardening) * sizeof(double));
@@ -117,7 +122,7 @@ static_assert(sizeof(ThermalParameters) == std::size(thermal) * sizeof(double));
 static_assert(sizeof(ViscosityParameters) == std::size(viscosity) * sizeof(double));
 
 // Model names as written in decks, in the order of the eos::Eos and strength::Yield variants.
-inline constexpr const char* eos_models[] = {"mie-gruneisen", "polynomial", "tillotson", "tabular"};
+inline constexpr const char* eos_models[] = {"mie-gruneisen", "polynomial", "tillotson", "tabular", "ideal-gas"};
 inline constexpr const char* strength_models[] = {"none", "linear", "power-law", "johnson-cook"};
 
 }  // namespace kessler::io::material_keys

@@ -366,6 +366,36 @@ Entry alTillotson() {
   return e;
 }
 
+// The gas of Noh's implosion: a strengthless test material for shock capturing, not a real gas
+// at a real state (its density 1 kg/m^3 and e = 0, so p = 0, are the problem's dimensionless
+// initial data in SI units).
+Entry idealGas() {
+  Entry e;
+  e.name = "ideal-gas-5/3";
+  e.description = "Monatomic ideal gas, gamma = 5/3, no strength: the gas of the Noh problem (Noh 1987)";
+  e.parameters.eos = eos::IdealGas({.density = 1.0, .gamma = 5.0 / 3.0});
+  e.parameters.shear_modulus = 0.0;
+  e.parameters.yield = strength::NoStrength{};
+  e.parameters.thermal = thermal(3116.0);
+  e.sources = {
+      "ideal gas p = (gamma - 1) rho e, gamma 5/3, rho0 1 kg/m^3: the gas of the Noh problem (Noh 1987, "
+      "'Errors for calculations of strong shocks using an artificial viscosity and an artificial heat flux', "
+      "J. Comput. Phys. 72:78-120)",
+      "no strength (shear modulus 0), no fracture energy: a gas",
+      "specific heat c_v 3116 J/(kg K): helium, 3/2 R/M with M 4.0026 g/mol; it only sets the temperature field, "
+      "never the pressure",
+      "Taylor-Quinney coefficient 0.9: unused (no strength, so no plastic work)",
+      viscosity,
+  };
+  e.notes =
+      "A test gas, not a material: at e = 0 its pressure and sound speed are exactly 0 (Noh's cold gas), so only "
+      "compression, through the artificial viscosity, gives it a signal speed, while the integrator wants a "
+      "positive sound speed at every point (docs/materials.md). Temperatures start at the room temperature 293 K "
+      "(thermal.room_temperature must be positive) rather than at e/c_v = 0 K, so they are an offset scale: the "
+      "pressure follows e alone.";
+  return e;
+}
+
 std::string lower(std::string text) {
   std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
   return text;
@@ -374,8 +404,8 @@ std::string lower(std::string text) {
 }  // namespace
 
 const std::vector<Entry>& entries() {
-  static const std::vector<Entry> all = {al6061(),         al2024(),    ly12(),       copper(),
-                                         copperPowerLaw(), steel4340(), alTillotson()};
+  static const std::vector<Entry> all = {al6061(),         al2024(),    ly12(),        copper(),
+                                         copperPowerLaw(), steel4340(), alTillotson(), idealGas()};
   return all;
 }
 

@@ -153,6 +153,42 @@ TEST(DeckMaterials, AMaterialWithoutStrengthNeedsNoShearModulus) {
   EXPECT_TRUE(std::holds_alternative<strength::NoStrength>(m.impact.yield));
 }
 
+TEST(DeckMaterials, ReadsAnIdealGas) {
+  const MaterialConfig air = material(R"(  al:
+    density: 1.2 kg/m^3
+    eos: { model: ideal-gas, gamma: 1.4 }
+    strength: { model: none }
+    thermal: { specific_heat: 718 J/(kg*K) })");
+  EXPECT_EQ(eosOf<eos::IdealGas>(air).density, 1.2);
+  EXPECT_EQ(eosOf<eos::IdealGas>(air).gamma, 1.4);
+  EXPECT_EQ(air.impact.shear_modulus, 0.0);
+  EXPECT_TRUE(std::holds_alternative<strength::NoStrength>(air.impact.yield));
+
+  const MaterialConfig noh = material("  al: { library: Ideal-Gas-5/3 }");
+  EXPECT_EQ(noh.library, "ideal-gas-5/3");
+  EXPECT_EQ(eosOf<eos::IdealGas>(noh).density, 1.0);
+  EXPECT_EQ(eosOf<eos::IdealGas>(noh).gamma, 5.0 / 3.0);
+  EXPECT_EQ(noh.impact.fracture_energy, 0.0);
+  const MaterialConfig hot = material("  al: { library: ideal-gas-5/3, density: 2 kg/m^3, eos: { gamma: 1.4 } }");
+  EXPECT_EQ(eosOf<eos::IdealGas>(hot).density, 2.0);
+  EXPECT_EQ(eosOf<eos::IdealGas>(hot).gamma, 1.4);
+}
+
+TEST(DeckMaterials, ReportsABadIdealGasAtItsKey) {
+  EXPECT_EQ(errorOf("  al: { library: ideal-gas-5/3, eos: { gamma: 1 } }"),
+            "materials.al.eos: eos.gamma must be greater than 1 (got 1)");
+  EXPECT_EQ(errorOf("  al: { library: Al6061-T6, eos: { model: ideal-gas } }"),
+            "materials.al.eos: missing required key 'gamma'");
+  EXPECT_EQ(errorOf("  al: { library: ideal-gas-5/3, eos: { gamma: 1.4, k1: 1 GPa } }"),
+            "materials.al.eos.k1: unknown key (allowed: model, gamma)");
+  EXPECT_EQ(errorOf("  al: { library: ideal-gas-5/3, eos: { gamma: 1.4 GPa } }"),
+            "materials.al.eos.gamma: '1.4 GPa' has units of kg/m*s^2, expected 1 (dimensionless)");
+  EXPECT_EQ(errorOf("  al: { library: ideal-gas-5/3, density: 0 }").rfind("materials.al.density: ", 0), 0u);
+  EXPECT_EQ(errorOf("  al: { library: ideal-gas-5/3, eos: { model: gas } }"),
+            "materials.al.eos.model: unknown eos model (known: mie-gruneisen, polynomial, tillotson, tabular, "
+            "ideal-gas) (got 'gas')");
+}
+
 TEST(DeckMaterials, ReadsATabularEosNextToTheDeck) {
   const RunConfig c = parseDeck(deck_dir / "good_tabular.yaml");
   const auto& table = std::get<eos::Tabular>(c.materials.at(0).impact.eos);

@@ -34,6 +34,7 @@ void expectSameImpact(const ImpactMaterialParameters& a, const ImpactMaterialPar
   expectSameModel<eos::MieGruneisen>(a.eos, b.eos, keys::mie_gruneisen);
   expectSameModel<eos::Polynomial>(a.eos, b.eos, keys::polynomial);
   expectSameModel<eos::Tillotson>(a.eos, b.eos, keys::tillotson);
+  expectSameModel<eos::IdealGas>(a.eos, b.eos, keys::ideal_gas);
   EXPECT_EQ(a.shear_modulus, b.shear_modulus);
   ASSERT_EQ(a.yield.index(), b.yield.index());
   expectSameModel<strength::LinearHardening>(a.yield, b.yield, keys::linear_hardening);
@@ -94,6 +95,11 @@ TEST(ResolvedDeckMaterials, WriteEveryParameterInSIUnits) {
                                "fracture_min_triaxiality: -0.333",
                                "model: tillotson",
                                "E0: 5000000",
+                               "model: ideal-gas",
+                               "gamma: 1.4",
+                               "library entry ideal-gas-5/3",
+                               "gamma: 1.6666666666666667",
+                               "density: 1.2",
                                "model: polynomial",
                                "k1: 149000000000",
                                "model: linear",

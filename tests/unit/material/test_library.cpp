@@ -26,7 +26,7 @@ TEST(Library, HasTheEntriesInAFixedOrder) {
   std::vector<std::string> names;
   for (const Entry& entry : entries()) names.push_back(entry.name);
   EXPECT_EQ(names, (std::vector<std::string>{"Al6061-T6", "Al2024-T351", "LY12", "OFHC-copper", "OFHC-copper-powerlaw",
-                                             "4340-steel", "Al-Tillotson"}));
+                                             "4340-steel", "Al-Tillotson", "ideal-gas-5/3"}));
 }
 
 TEST(Library, NamesAreUniqueIgnoringCase) {
@@ -51,6 +51,17 @@ TEST(Library, EveryEntryIsCompletePhysicalAndSourced) {
           }
         },
         p.eos);
+    EXPECT_NO_THROW(p.thermal.check());
+    EXPECT_NO_THROW(p.viscosity.check());
+    EXPECT_EQ(p.pressure_floor, -std::numeric_limits<double>::infinity());
+    if (std::holds_alternative<eos::IdealGas>(p.eos)) {
+      // A gas: no strength, no damage, nothing to erode.
+      EXPECT_TRUE(std::holds_alternative<strength::NoStrength>(p.yield));
+      EXPECT_EQ(p.shear_modulus, 0.0);
+      EXPECT_FALSE(p.damage.has_value());
+      EXPECT_EQ(p.fracture_energy, 0.0);
+      continue;
+    }
     EXPECT_GT(eos::referenceDensity(p.eos), 1000.0);
     ASSERT_FALSE(std::holds_alternative<strength::NoStrength>(p.yield));
     std::visit(
@@ -64,9 +75,6 @@ TEST(Library, EveryEntryIsCompletePhysicalAndSourced) {
     if (p.damage) {
       EXPECT_NO_THROW(p.damage->check());
     }
-    EXPECT_NO_THROW(p.thermal.check());
-    EXPECT_NO_THROW(p.viscosity.check());
-    EXPECT_EQ(p.pressure_floor, -std::numeric_limits<double>::infinity());
   }
 }
 
@@ -120,6 +128,13 @@ TEST(Library, CarriesThePublishedConstants) {
   const auto& tillotson = std::get<eos::Tillotson>(find("Al-Tillotson").parameters.eos).parameters();
   EXPECT_EQ(tillotson.A, 75.2e9);
   EXPECT_EQ(tillotson.E_cv, 13.9e6);
+
+  const Entry& gas = find("IDEAL-GAS-5/3");
+  const auto& noh = std::get<eos::IdealGas>(gas.parameters.eos).parameters();
+  EXPECT_EQ(noh.gamma, 5.0 / 3.0);
+  EXPECT_EQ(noh.density, 1.0);
+  EXPECT_EQ(gas.parameters.thermal.specific_heat, 3116.0);
+  EXPECT_EQ(gas.parameters.viscosity.quadratic, ViscosityParameters{}.quadratic);
 
   EXPECT_EQ(find("Al2024-T351").parameters.damage->D4, 0.011);
   EXPECT_FALSE(find("LY12").parameters.damage.has_value());
