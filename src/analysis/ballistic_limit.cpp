@@ -57,7 +57,7 @@ std::string_view damageName(WallDamage damage) {
 }
 
 // Christiansen, "Design and performance equations for advanced meteoroid and debris shields",
-// Int. J. Impact Eng. 14 (1993); NASA JSC-65549 form as quoted in REFERENCE.md §3.
+// Int. J. Impact Eng. 14 (1993), in the NASA JSC (JSC-65549) form written out in docs/analysis.md §8.
 double christiansenBallistic(const ChristiansenUnits& u, double v_km_s, double theta) {
   const double resistance = u.t_w * std::sqrt(u.sigma_ksi / 40.0) + u.t_b;
   const double denominator =
@@ -127,7 +127,8 @@ Penetration courPalaisPenetration(const SingleWall& wall, const Projectile& proj
   requirePositive(projectile.speed, "impact speed", "m/s");
   requireObliquity(projectile.obliquity);
 
-  // Cour-Palais (NASA JSC), as in REFERENCE.md §3: everything but d is a factor k, P = k d^(19/18).
+  // Cour-Palais (Int. J. Impact Eng. 5, 1987), in the NASA JSC form of docs/analysis.md §8:
+  // everything but d is a factor k, P = k d^(19/18).
   const double k = 5.24 * std::pow(wall.brinell_hardness, -0.25) * std::sqrt(projectile.density / wall.density) *
                    std::pow(projectile.speed * std::cos(projectile.obliquity) / wall.sound_speed, 2.0 / 3.0);
   const double d_cm = projectile.diameter * cm_per_m;

@@ -1,8 +1,9 @@
 #pragma once
 // Engineering ballistic-limit equations that shielding engineers compare simulations with
-// (REFERENCE.md §3): Christiansen's Whipple-shield ballistic limit and the JSC Cour-Palais
-// single-wall penetration equation. The equations are empirical fits in cm, g/cm^3, km/s and
-// ksi; the interface is SI and the conversion happens inside.
+// (docs/analysis.md §8): Christiansen's Whipple-shield ballistic limit (Int. J. Impact Eng. 14,
+// 1993; NASA TP-2003-210788) and the JSC Cour-Palais single-wall penetration equation (Int. J.
+// Impact Eng. 5, 1987). The equations are empirical fits in cm, g/cm^3, km/s and ksi; the
+// interface is SI and the conversion happens inside.
 
 #include <string_view>
 

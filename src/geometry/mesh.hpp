@@ -1,6 +1,6 @@
 #pragma once
 // Tetrahedral meshing of shapes through the Gmsh C++ API, import of Gmsh .msh files, and the
-// conversion of a tetrahedral mesh into OTM nodes and material points (DESIGN.md §2).
+// conversion of a tetrahedral mesh into OTM nodes and material points (docs/theory.md §1).
 #include "core/types.hpp"
 #include "geometry/shape.hpp"
 
@@ -19,8 +19,8 @@ struct Refinement {
 
 struct MeshRequest {
   Shape shape;
-  double mesh_size = 0.0;             // target tetrahedron edge length
-  std::optional<Refinement> refine;   // optional local refinement
+  double mesh_size = 0.0;            // target tetrahedron edge length
+  std::optional<Refinement> refine;  // optional local refinement
   // Symmetry planes through the origin with normal along these axes (0 = x, 1 = y, 2 = z):
   // only the part of the shape with coordinate >= 0 along each is meshed.
   std::vector<int> symmetry_axes;

@@ -1,5 +1,5 @@
 #pragma once
-// The YAML deck (DESIGN.md §4, reference in docs/deck.md) parsed into a typed RunConfig.
+// The YAML deck (reference in docs/deck.md) parsed into a typed RunConfig.
 // Every problem in a deck is a kessler::InputError with one line that says where and why:
 //   deck.yaml:7:13: bodies[0].mesh_size: must be positive (got '-1 mm')
 // Values set on the command line are reported as such:

@@ -225,7 +225,8 @@ double meltTemperature(const strength::Yield& yield) {
 }
 
 // Off unless the deck asks: a library entry's published set is only the starting point of
-// `failure: { model: johnson-cook }` (the default failure model is eigenerosion, DESIGN.md §1).
+// `failure: { model: johnson-cook }` (the default failure model is eigenerosion: docs/deck.md,
+// docs/theory.md §8).
 std::optional<strength::JohnsonCookDamageParameters> parseFailure(const MapField& material,
                                                                   const ImpactMaterialParameters* base,
                                                                   const strength::Yield& yield) {

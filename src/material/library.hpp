@@ -1,6 +1,7 @@
 #pragma once
-// The material library: named, published parameter sets (REFERENCE.md §1), each constant with
-// its source. A deck uses one as `{ library: NAME }` and may override any key.
+// The material library: named, published parameter sets, each constant with its source (the
+// sets, their papers and their known problems are tabulated in docs/materials.md). A deck uses one
+// as `{ library: NAME }` and may override any key.
 #include "material/impact_material.hpp"
 
 #include <string>
@@ -9,11 +10,11 @@
 namespace kessler::library {
 
 struct Entry {
-  std::string name;                   // e.g. "Al6061-T6"
+  std::string name;  // e.g. "Al6061-T6"
   std::string description;
   ImpactMaterialParameters parameters;
-  std::vector<std::string> sources;   // one line per parameter group: what, value, where from
-  std::string notes;                  // known problems with the published set and the choice made
+  std::vector<std::string> sources;  // one line per parameter group: what, value, where from
+  std::string notes;                 // known problems with the published set and the choice made
 };
 
 // All entries, in a fixed order.

@@ -1,4 +1,4 @@
-// contact-gap: seizing contact must not couple bodies across a visible gap (DESIGN.md §1). A
+// contact-gap: seizing contact must not couple bodies across a visible gap (docs/theory.md §3). A
 // cube moves at 200 m/s towards a block at rest, 3 cells away. The block's nodes may join a
 // point's neighbourhood only when they lie within contact_distance * h of that point, and a
 // point sits inside its own body, so the block must stay exactly at rest (every velocity
@@ -19,8 +19,8 @@ Outcome contactGap() {
   const double c = 1e-3, speed = 200.0, gap0 = 3 * c;
   auto material = elasticAluminium();
   otm::Model model;
-  const int a = addBoxBody(model, "cube", {Vec3(0, 0, 0), Vec3(4 * c, 4 * c, 4 * c)}, {4, 4, 4},
-                           Vec3(speed, 0.0, 0.0), material);
+  const int a =
+      addBoxBody(model, "cube", {Vec3(0, 0, 0), Vec3(4 * c, 4 * c, 4 * c)}, {4, 4, 4}, Vec3(speed, 0.0, 0.0), material);
   const int b = addBoxBody(model, "block", {Vec3(4 * c + gap0, -c, -c), Vec3(10 * c + gap0, 5 * c, 5 * c)}, {6, 6, 6},
                            Vec3::Zero(), material);
 
@@ -63,9 +63,10 @@ Outcome contactGap() {
   o.reference = 0.5;
   o.tolerance = 0.5;
   o.comparison = Comparison::absolute;
-  o.note = fmt::format("first interaction at step {} across a gap of {:.3f} mm (start {:.1f} mm); contact_distance h "
-                       "= {:.3f} mm",
-                       integrator.steps(), 1e3 * first_gap, 1e3 * gap0, 1e3 * coupling);
+  o.note = fmt::format(
+      "first interaction at step {} across a gap of {:.3f} mm (start {:.1f} mm); contact_distance h "
+      "= {:.3f} mm",
+      integrator.steps(), 1e3 * first_gap, 1e3 * gap0, 1e3 * coupling);
   return compare(o);
 }
 

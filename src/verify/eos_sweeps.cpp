@@ -86,7 +86,7 @@ double relative(double value, double reference, double scale) {
 }  // namespace
 
 Outcome eosMieGruneisen() {
-  // Al 6061-T6, Steinberg 1996 (REFERENCE.md §1).
+  // Al 6061-T6, Steinberg 1996 (UCRL-MA-106439; the library's constants, docs/materials.md).
   const double rho0 = 2703.0, c0 = 5240.0, s = 1.40, g0 = 1.97, k0 = rho0 * c0 * c0;
   const eos::MieGruneisen model({.density = rho0, .sound_speed = c0, .slope = s, .gamma0 = g0});
   const std::vector<double> rhos = logRange(0.5 * rho0, 0.98 * rho0 * s / (s - 1.0), 81);
@@ -153,7 +153,7 @@ Outcome eosPolynomial() {
 }
 
 Outcome eosTillotson() {
-  // Aluminium, iSALE set (REFERENCE.md §1).
+  // Aluminium, the iSALE set after Tillotson 1962 and Melosh 1989, appendix II (docs/materials.md).
   const eos::TillotsonParameters t{.density = 2700.0,
                                    .a = 0.5,
                                    .b = 1.63,

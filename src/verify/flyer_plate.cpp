@@ -1,7 +1,7 @@
 // flyer-plate: a symmetric Al 6061-T6 plate impact at v = 2 km/s, quasi one-dimensional (a
 // slab column with roller sides, i.e. uniaxial strain). Behind the shock in the target the
 // Mie-Gruneisen Hugoniot gives particle velocity up = v/2, shock speed Us = c0 + s up and
-// pressure P = rho0 Us up (REFERENCE.md §2: 1.00 km/s, 6.64 km/s, ~17.9 GPa), and the
+// pressure P = rho0 Us up (1.00 km/s, 6.64 km/s, 17.9 GPa for Al 6061-T6: c0 5240 m/s, s 1.40), and the
 // Rankine-Hugoniot energy jump e - e0 = (P + P0)(V0 - V)/2 = up^2/2 (0.5 MJ/kg; with e0 = 0 and
 // P0 = 0 it follows from the mass and momentum jumps alone, whatever the constitutive law). The
 // plateau is averaged between the impact face and the front; the front is where the velocity

@@ -1,5 +1,5 @@
 // momentum: two elastic bodies of different size collide obliquely and seize together. With
-// nodal momentum gathered from the material points (DESIGN.md §2 step 3) and forces whose
+// nodal momentum gathered from the material points (docs/theory.md §4) and forces whose
 // sum vanishes by the LME identity sum_a grad N_a = 0, total linear momentum is conserved to
 // round-off. Measured: the largest change of total momentum over the run divided by the
 // momentum scale sum_p m_p |v_p(0)|; tolerance 1e-10. The run must also show a real

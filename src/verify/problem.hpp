@@ -1,5 +1,5 @@
 #pragma once
-// Built-in verification problems (DESIGN.md §4, `kessler verify`): each runs a small problem
+// Built-in verification problems (`kessler verify`, docs/validation.md): each runs a small problem
 // and compares one measured number with an analytic or published reference.
 #include <functional>
 #include <string>
@@ -14,15 +14,15 @@ enum class Comparison {
 
 struct Outcome {
   std::string name;
-  std::string quantity;   // what was measured, with its unit
+  std::string quantity;  // what was measured, with its unit
   double measured = 0.0;
   double reference = 0.0;
-  double error = 0.0;     // relative or absolute, as `comparison` says
+  double error = 0.0;  // relative or absolute, as `comparison` says
   double tolerance = 0.0;
   Comparison comparison = Comparison::relative;
   bool passed = false;
   double seconds = 0.0;
-  std::string note;       // how the reference was obtained, resolution, ...
+  std::string note;  // how the reference was obtained, resolution, ...
 };
 
 struct Problem {

@@ -1,4 +1,4 @@
-// taylor-bar: the classic copper Taylor impact benchmark (REFERENCE.md §2): a bar of length
+// taylor-bar: the classic copper Taylor impact benchmark (docs/validation.md): a bar of length
 // 32.4 mm and radius 3.2 mm hits a rigid frictionless wall at 227 m/s; rho 8930 kg/m^3,
 // E 117 GPa, nu 0.35, yield 400 MPa with linear hardening 100 MPa; after 80 us the reported
 // final length is 21.42-21.48 mm and the footprint radius 7.11-7.23 mm (converged ~7.23 mm).
@@ -81,7 +81,7 @@ TaylorBarResult runTaylorBar(double mesh_size, double cfl, bool volume_averaging
 
 namespace {
 
-// The reported ranges (REFERENCE.md §2); errors are distances from the range.
+// The reported ranges (docs/validation.md, Taylor bar); errors are distances from the range.
 constexpr double length_low = 21.42e-3, length_high = 21.48e-3, radius_low = 7.11e-3, radius_high = 7.23e-3;
 
 // Distance of `value` from the reported range [low, high], relative to the nearest end; 0 inside.
@@ -91,7 +91,7 @@ double rangeError(double value, double low, double high) {
   return 0.0;
 }
 
-// Length and footprint radius at one resolution against the reported ranges (REFERENCE.md §2),
+// Length and footprint radius at one resolution against the reported ranges (docs/validation.md),
 // each within 3% of the nearest end of its range.
 Outcome taylorBarAt(const std::string& name, double mesh_size) {
   const TaylorBarResult r = runTaylorBar(mesh_size);

@@ -1,8 +1,8 @@
 // wave-speed: a longitudinal wave in a bar under uniaxial strain. A 2 x 2 x 100-cell bar with
 // roller (zero normal velocity) lateral faces is pushed at z = 0 by a piston at v0 = 1 m/s;
-// the step front travels at c_L = sqrt((K + 4G/3) / rho) (REFERENCE.md §2). The front is the
-// place where the slab-averaged velocity reaches v0/2; its speed is measured between two
-// times so the start-up transient cancels.
+// the step front travels at the P-wave speed of linear elasticity, c_L = sqrt((K + 4G/3) / rho)
+// (docs/validation.md). The front is the place where the slab-averaged velocity reaches v0/2;
+// its speed is measured between two times so the start-up transient cancels.
 #include "verify/fixtures.hpp"
 #include "verify/problems.hpp"
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Regression: examples/whipple.yaml (Al sphere onto a 1.92 mm bumper, 100 mm spacing, 1.94 mm rear
 # wall, 5.3 km/s) as shipped, and with a 2 mm sphere, on both sides of Christiansen's ballistic
-# limit (critical diameter 3.24 mm here, REFERENCE.md §3). Checked:
+# limit (Christiansen 1993; critical diameter 3.24 mm here, docs/analysis.md §8). Checked:
 #   - the sphere perforates the bumper with a hole at least as wide as itself (a hypervelocity
 #     sphere punches at least its own diameter through a plate; until failed material bore
 #     compression, the 5 mm sphere's debris crossed the bumper through a 4 mm hole: docs/theory.md

@@ -1,7 +1,7 @@
 #pragma once
 // Equations of state: pressure and sound speed from density and specific internal energy.
 // Each model is a small value type with `evaluate(rho, e)`; a material holds an `Eos` variant
-// and visits it once per range of points, never per point (DESIGN.md §3).
+// and visits it once per range of points, never per point (CONTRIBUTING.md, "Physics code").
 #include "material/eos/ideal_gas.hpp"
 #include "material/eos/mie_gruneisen.hpp"
 #include "material/eos/polynomial.hpp"

@@ -1,6 +1,6 @@
 #pragma once
 // Mie-Gruneisen equation of state referenced to the shock Hugoniot Us = c0 + s up, with
-// Gamma rho = Gamma0 rho0 (DESIGN.md §1; e.g. Steinberg 1996, Meyers "Dynamic Behavior of
+// Gamma rho = Gamma0 rho0 (docs/eos.md; e.g. Steinberg 1996, Meyers "Dynamic Behavior of
 // Materials" §4.6). Hugoniot reference in compression (mu = rho/rho0 - 1 > 0):
 //   p_H = rho0 c0^2 mu (1 + mu) / (1 - (s - 1) mu)^2,  e_H = p_H mu / (2 rho0 (1 + mu)),
 //   p = p_H + Gamma rho (e - e_H).

@@ -1,5 +1,5 @@
 #pragma once
-// Cubic polynomial equation of state (DESIGN.md §1), mu = rho/rho0 - 1:
+// Cubic polynomial equation of state (docs/eos.md), mu = rho/rho0 - 1:
 //   p = K1 mu + K2 mu^2 + K3 mu^3 + Gamma0 E (1 + mu),
 // with E = rho0 e the internal energy per unit reference volume (so the energy term is
 // Gamma0 rho e). In tension (mu < 0) the K2 and K3 terms are dropped, the usual convention

@@ -1,4 +1,4 @@
-// SESAME ASCII reader and writer (LANL format; REFERENCE.md §1, docs/eos.md
+// SESAME ASCII reader and writer (LANL format; Lyon & Johnson, LA-UR-92-3407, 1992; docs/eos.md
 // "SESAME files"). A table is a header line (I2 record flag, I6 material id, I6
 // table id, I6 word count) followed by its words, five E15.8 numbers per line,
 // columns 76-80 holding a line marker that is ignored. Units in the file:

@@ -1,7 +1,8 @@
 #pragma once
-// Tabular equation of state from a SESAME-format ASCII file (LANL; REFERENCE.md §1): table 201
-// (Z, A, rho0, B0, T0) and table 301 (NR densities, NT temperatures, P(rho, T) in GPa and
-// E(rho, T) in MJ/kg, density fastest; densities in g/cm^3). Kessler works in SI internally.
+// Tabular equation of state from a SESAME-format ASCII file (LANL; Lyon & Johnson, LA-UR-92-3407,
+// 1992; docs/eos.md): table 201 (Z, A, rho0, B0, T0) and table 301 (NR densities, NT temperatures,
+// P(rho, T) in GPa and E(rho, T) in MJ/kg, density fastest; densities in g/cm^3). Kessler works in
+// SI internally.
 // p(rho, e) is found by inverting E(rho, T) for T along each density, then interpolating P.
 #include "material/eos/state.hpp"
 
@@ -33,14 +34,14 @@ SesameTable readSesame(const std::filesystem::path& file, int material_id = 0);
 void writeSesame(const SesameTable& table, const std::filesystem::path& file);
 
 struct TabularParameters {
-  std::string file;        // path of the SESAME file
+  std::string file;  // path of the SESAME file
   int material_id = 0;
 };
 
 class Tabular {
  public:
   Tabular();  // an empty table, so configurations can be default-built; evaluate() throws
-  explicit Tabular(const TabularParameters& p);      // reads the file
+  explicit Tabular(const TabularParameters& p);  // reads the file
   explicit Tabular(std::shared_ptr<const SesameTable> table);
   // Throws kessler::NumericalError if (rho, e) lies outside the table.
   State evaluate(double rho, double e) const;
@@ -52,7 +53,7 @@ class Tabular {
  private:
   std::shared_ptr<const SesameTable> table_;  // shared: copies of a material share one table
   TabularParameters parameters_;
-  double floor_modulus_ = 0.0;                // K0 of the c^2 floor: B0, or the largest |P| if B0 <= 0
+  double floor_modulus_ = 0.0;  // K0 of the c^2 floor: B0, or the largest |P| if B0 <= 0
 };
 
 }  // namespace kessler::eos

@@ -9,8 +9,9 @@ namespace kessler::strength {
 namespace {
 
 // Floor on eps_f when the user sets no min_failure_strain: D1 + D2 exp(D3 sigma*) turns negative
-// at high triaxiality for sets with D1 < 0 (6061-T6, REFERENCE.md §1), and a negative or zero
-// failure strain must mean "fails at once", not a negative or infinite damage increment.
+// at high triaxiality for sets with D1 < 0 (the commonly cited 6061-T6 set, docs/materials.md),
+// and a negative or zero failure strain must mean "fails at once", not a negative or infinite
+// damage increment.
 constexpr double tiny_failure_strain = 1e-9;
 
 void requireFinite(const char* name, double value) {

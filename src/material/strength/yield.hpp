@@ -1,6 +1,6 @@
 #pragma once
-// Flow-stress laws for J2 plasticity (DESIGN.md §1; parameters in REFERENCE.md §1). Each is a
-// small value type with
+// Flow-stress laws for J2 plasticity (docs/strength.md; the published parameter sets and their
+// sources are in docs/materials.md). Each is a small value type with
 //   double flowStress(eps_p, eps_p_rate, T, T_melt) -> sigma_y (Pa), 0 at or above melting
 //   double hardening(eps_p, eps_p_rate, T, T_melt, dt) -> d sigma_y / d(delta eps_p), for the
 //     Newton iteration of the radial return with eps_p_rate = delta eps_p / dt
@@ -15,19 +15,19 @@ namespace kessler::strength {
 // dependent Tm(J) = Tm0 exp[2a(1 - J)] J^(2(1/3 + a - Gamma0)) (Fan et al. 2019).
 // `rate_factor_cap` (> 1, default unlimited) caps the rate factor [1 + (rate/rate0)^m]: the
 // published copper set (m = 1, rate0 = 1/s) otherwise multiplies the flow stress by ~1e6 at
-// impact strain rates (REFERENCE.md §1 note).
+// impact strain rates (Liao et al. 2022, Table 2, taken literally; docs/strength.md).
 struct PowerLawParameters {
-  double sigma0 = 0.0;            // Pa
-  double eps0 = 0.0;              // reference plastic strain
-  double rate0 = 1.0;             // 1/s
-  double n = 0.0;                 // hardening exponent
-  double m = 0.0;                 // rate exponent
-  double l = 1.0;                 // thermal-softening exponent
+  double sigma0 = 0.0;              // Pa
+  double eps0 = 0.0;                // reference plastic strain
+  double rate0 = 1.0;               // 1/s
+  double n = 0.0;                   // hardening exponent
+  double m = 0.0;                   // rate exponent
+  double l = 1.0;                   // thermal-softening exponent
   double room_temperature = 293.0;  // T0, K
-  double melt_temperature = 0.0;  // Tm0, K
-  double melt_a = 0.0;            // a of Tm(J); 0: Tm does not depend on compression
-  double melt_gamma0 = 0.0;       // Gamma0 of Tm(J)
-  double rate_factor_cap = 0.0;   // 0: no cap
+  double melt_temperature = 0.0;    // Tm0, K
+  double melt_a = 0.0;              // a of Tm(J); 0: Tm does not depend on compression
+  double melt_gamma0 = 0.0;         // Gamma0 of Tm(J)
+  double rate_factor_cap = 0.0;     // 0: no cap
   void check() const;
 };
 
@@ -66,10 +66,10 @@ class JohnsonCook {
 };
 
 // Linear isotropic hardening sigma_y = sigma0 + H eps_p (rate and temperature independent),
-// for benchmarks such as the Taylor bar (REFERENCE.md §2).
+// for benchmarks such as the Taylor bar (docs/validation.md).
 struct LinearHardeningParameters {
-  double sigma0 = 0.0;  // Pa
-  double H = 0.0;       // Pa
+  double sigma0 = 0.0;              // Pa
+  double H = 0.0;                   // Pa
   double melt_temperature = 1e300;  // K
   void check() const;
 };

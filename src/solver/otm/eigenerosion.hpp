@@ -1,7 +1,8 @@
 #pragma once
-// Eigenerosion (Pandolfi & Ortiz, IJNME 92:694, 2012; in OTM: Li, Pandolfi & Ortiz, 2015),
-// DESIGN.md §2 step 8. A material point p erodes, irreversibly, when the energy-release rate
-// estimated over the ball B_eps(x_p) of intact points of its body reaches G_c:
+// Eigenerosion (Pandolfi & Ortiz, IJNME 92:694, 2012; in OTM: Li, Pandolfi & Ortiz, 2015), run
+// after the constitutive update of each step (docs/theory.md §8). A material point p erodes,
+// irreversibly, when the energy-release rate estimated over the ball B_eps(x_p) of intact points
+// of its body reaches G_c:
 //   G_p = (C_eps / m_p^eps) sum_{q in B_eps} m_q W_q,   m_p^eps = sum_{q in B_eps} m_q.
 // C_eps is calibrated so that a straight crack front releases exactly G_c: averaging the
 // mode-I near-tip energy density (plane stress) over a ball of radius eps centred on the front

@@ -1,7 +1,7 @@
 #pragma once
-// Steps 1-2 of the OTM step (DESIGN.md §2): each material point's node neighbourhood from a
-// cell-list search, with the seizing-contact policy across bodies, and the LME shape
-// functions there. Results go to Model::connectivity in point order, identical for any
+// The neighbourhood part of the OTM step (docs/theory.md §2-4): each material point's node
+// neighbourhood from a cell-list search, with the seizing-contact policy across bodies, and the
+// LME shape functions there. Results go to Model::connectivity in point order, identical for any
 // thread count.
 #include "approx/lme.hpp"
 #include "search/cell_list.hpp"

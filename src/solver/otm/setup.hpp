@@ -1,6 +1,6 @@
 #pragma once
 // Building a model: bodies meshed into tetrahedra become nodes and material points
-// (DESIGN.md §2: V_p = V_tet, m_p = rho0 V_p, F_p = I), with fixed nodes and symmetry planes.
+// (docs/theory.md §1: V_p = V_tet, m_p = rho0 V_p, F_p = I), with fixed nodes and symmetry planes.
 #include "geometry/mesh.hpp"
 #include "solver/otm/model.hpp"
 
@@ -23,8 +23,8 @@ Model buildModel(const std::vector<BodySetup>& bodies, const std::vector<int>& s
 
 // Appends one body from an existing discretisation (used by verification problems).
 // Returns the body index.
-int addBody(Model& model, const std::string& name, const MaterialPtr& material,
-            const geometry::Discretisation& mesh, const Vec3& velocity);
+int addBody(Model& model, const std::string& name, const MaterialPtr& material, const geometry::Discretisation& mesh,
+            const Vec3& velocity);
 
 // Prescribes velocity component `axis` of a node (0 for a fixed or symmetry constraint).
 void constrainNode(Model& model, LocalIndex node, int axis, double velocity = 0.0);

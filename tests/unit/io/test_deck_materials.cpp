@@ -66,7 +66,7 @@ TEST(DeckMaterials, ALibraryEntryGivesItsParametersWithoutJohnsonCookDamage) {
   EXPECT_EQ(m.impact.thermal.specific_heat, entry.parameters.thermal.specific_heat);
   EXPECT_EQ(m.impact.viscosity.quadratic, entry.parameters.viscosity.quadratic);
   EXPECT_EQ(m.impact.pressure_floor, -std::numeric_limits<double>::infinity());
-  // The default failure model is eigenerosion (DESIGN.md §1): JC damage only when asked for.
+  // The default failure model is eigenerosion (docs/deck.md): JC damage only when asked for.
   EXPECT_FALSE(m.impact.damage.has_value());
 }
 

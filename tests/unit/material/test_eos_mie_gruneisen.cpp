@@ -1,6 +1,6 @@
 // Mie-Gruneisen EOS against an independent evaluation written in eta = 1 - rho0/rho (Meyers
-// 1994, §4: p_H = rho0 c0^2 eta / (1 - s eta)^2), the Al 6061-T6 Hugoniot point of
-// REFERENCE.md §2, the compression limit and the parameter checks.
+// 1994, §4: p_H = rho0 c0^2 eta / (1 - s eta)^2), the Al 6061-T6 Hugoniot point at up = 1 km/s
+// (Steinberg 1996's constants; docs/eos.md), the compression limit and the parameter checks.
 #include "core/error.hpp"
 #include "material/eos/mie_gruneisen.hpp"
 
@@ -67,7 +67,7 @@ TEST(EosMieGruneisen, HugoniotPointOfAl6061At1KmPerSecond) {
   const double rho = al6061.density * us / (us - up);
   const double p = eos.evaluate(rho, 0.5 * up * up).pressure;
   EXPECT_NEAR(p / (al6061.density * us * up), 1.0, 1e-10);
-  EXPECT_NEAR(p, 17.9e9, 0.05e9);  // REFERENCE.md §2
+  EXPECT_NEAR(p, 17.9e9, 0.05e9);  // rho0 Us up = 17.95 GPa (docs/eos.md)
 }
 
 TEST(EosMieGruneisen, SmoothThroughTheReferenceDensity) {

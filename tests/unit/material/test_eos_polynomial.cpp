@@ -42,7 +42,7 @@ TEST(EosPolynomial, MatchesIndependentFormulaOverWideSweep) {
 }
 
 TEST(EosPolynomial, LinearSteelHasTheBulkSoundSpeed) {
-  // Zhao & Song 2010 steel (REFERENCE.md §1): K1 = 149 GPa, K2 = K3 = 0.
+  // Zhao & Song 2010 steel (Explosion and Shock Waves 30(4); docs/materials.md): K1 = 149 GPa, K2 = K3 = 0.
   const Polynomial steel({.density = 7800.0, .k1 = 149e9, .k2 = 0.0, .k3 = 0.0, .gamma0 = 0.0});
   const State s = steel.evaluate(7800.0, 0.0);
   EXPECT_EQ(s.pressure, 0.0);

@@ -1,4 +1,4 @@
-// Tillotson EOS (iSALE aluminium, REFERENCE.md §1) against an independent evaluation of
+// Tillotson EOS (iSALE aluminium, Tillotson 1962; docs/materials.md) against an independent evaluation of
 // Melosh 1989, appendix II, and continuity across the boundaries of its regions.
 #include "core/error.hpp"
 #include "material/eos/tillotson.hpp"

@@ -95,7 +95,8 @@ TEST(Library, FindListsTheKnownNamesForAnUnknownOne) {
   }
 }
 
-// A few constants against REFERENCE.md §1, one per parameter group, to catch a slip in transcription.
+// A few constants against the published sources (Steinberg 1996, Liao et al. 2022, Johnson & Cook 1983 and
+// 1985, Fan et al. 2019; docs/materials.md), one per parameter group, to catch a slip in transcription.
 TEST(Library, CarriesThePublishedConstants) {
   const auto& al = std::get<eos::MieGruneisen>(find("Al6061-T6").parameters.eos).parameters();
   EXPECT_EQ(al.density, 2703.0);

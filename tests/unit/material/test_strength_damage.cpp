@@ -1,5 +1,6 @@
 // Johnson-Cook damage (Johnson & Cook 1985) against an independent evaluation of eq. 2 with the
-// REFERENCE.md §1 constants, accumulation to failure, the floors and the parameter checks.
+// paper's OFHC copper and 4340 steel constants (docs/materials.md), accumulation to failure, the
+// floors and the parameter checks.
 #include "core/error.hpp"
 #include "material/strength/damage.hpp"
 
@@ -78,7 +79,8 @@ TEST(StrengthDamage, AccumulatesToFailureAtTheFailureStrain) {
 }
 
 TEST(StrengthDamage, FailureStrainIsFloored) {
-  // 6061-T6 (REFERENCE.md §1, "verify"): D1 = -0.77 makes eps_f negative at high triaxiality.
+  // 6061-T6 (commonly cited set, not checked against a primary source; docs/materials.md): D1 = -0.77 makes
+  // eps_f negative at high triaxiality.
   JohnsonCookDamageParameters p{.D1 = -0.77,
                                 .D2 = 1.45,
                                 .D3 = -0.47,

@@ -1,5 +1,6 @@
-// The scalar plastic-increment solve of the radial return over a sweep of hard cases: every law
-// of REFERENCE.md §1, plastic strains from 0 (slope of eps_p^n infinite) to 2, steps from a
+// The scalar plastic-increment solve of the radial return over a sweep of hard cases: the published
+// laws of docs/materials.md (Liao et al. 2022, Fan et al. 2019, Johnson & Cook 1983) and a few
+// synthetic ones, plastic strains from 0 (slope of eps_p^n infinite) to 2, steps from a
 // picosecond (rates ~1e10 /s) to an hour (rates ~1e-12 /s), temperatures up to 0.01 K below
 // melting, and trial stresses from 1 + 1e-12 to 1000 times the yield stress.
 #include "material/strength/radial_return.hpp"

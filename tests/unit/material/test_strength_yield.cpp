@@ -1,4 +1,4 @@
-// Flow-stress laws against independent evaluations of the published formulas (REFERENCE.md §1),
+// Flow-stress laws against independent evaluations of the published formulas (docs/strength.md),
 // their slopes against central differences, melting, and the parameter checks.
 #include "core/error.hpp"
 #include "material/strength/yield.hpp"
@@ -98,7 +98,8 @@ TEST(StrengthYield, PowerLawRateCapLimitsCopper) {
   const PowerLaw uncapped(p);
   p.rate_factor_cap = 3.0;
   const PowerLaw capped(p);
-  // At 1e6 /s the published set multiplies sigma_y by 1e6 + 1 (REFERENCE.md §1 note).
+  // At 1e6 /s the published set multiplies sigma_y by 1e6 + 1 (Liao et al. 2022, Table 2, taken
+  // literally; docs/strength.md).
   EXPECT_NEAR(uncapped.flowStress(0.0, 1e6, 293.0, 1790.0), 120e6 * (1.0 + 1e6), 1.0);
   EXPECT_DOUBLE_EQ(capped.flowStress(0.0, 1e6, 293.0, 1790.0), 3.0 * 120e6);
   EXPECT_DOUBLE_EQ(capped.flowStress(0.0, 0.5, 293.0, 1790.0), 1.5 * 120e6);  // below the cap
