@@ -16,14 +16,14 @@ namespace kessler::io {
 namespace {
 
 // Bumped whenever the layout changes; an older or newer checkpoint is refused with a message.
-constexpr std::int64_t format_version = 4;
+constexpr std::int64_t format_version = 5;
 
 // Vec3 and Mat3 are stored as runs of 3 and 9 doubles, straight from the store.
 static_assert(sizeof(Vec3) == 3 * sizeof(double));
 static_assert(sizeof(Mat3) == 9 * sizeof(double));
 // Tripwires: a field added to a store must be added to pointFields/nodeFields below (and the
 // count here), or restarts would silently lose it.
-constexpr std::size_t point_field_count = 24, node_field_count = 9;
+constexpr std::size_t point_field_count = 26, node_field_count = 9;
 static_assert(sizeof(PointStore) == point_field_count * sizeof(std::vector<double>) + sizeof(std::int64_t),
               "PointStore gained or lost a field: add it to pointFields() in io/checkpoint.cpp");
 static_assert(sizeof(NodeStore) == node_field_count * sizeof(std::vector<double>) + sizeof(std::int64_t),
@@ -52,6 +52,8 @@ void pointFields(Store& s, Visit&& visit) {
   visit("strain_energy", s.strain_energy);
   visit("ductile_work", s.ductile_work);
   visit("viscous_pressure", s.viscous_pressure);
+  visit("viscosity_limiter", s.viscosity_limiter);
+  visit("volume_defect", s.volume_defect);
   visit("be", s.be);
   visit("eroded", s.eroded);
   visit("passes_through", s.passes_through);
@@ -118,32 +120,36 @@ void readArray(const Hdf5Reader& h5, const std::string& name, std::vector<T>& va
   std::copy(flat.begin(), flat.end(), reinterpret_cast<Scalar*>(values.data()));
 }
 
+// Per history row: time, dt, kinetic, internal and stabilisation energy, momentum.
+constexpr std::size_t history_columns = 8;
+
 void writeHistoryRows(Hdf5Writer& h5, const std::vector<HistoryRow>& history) {
   std::vector<std::int64_t> steps;
   std::vector<double> values;
   for (const HistoryRow& r : history) {
     steps.push_back(r.step);
-    for (double v : {r.time, r.dt, r.energies.kinetic, r.energies.internal, r.energies.momentum[0],
-                     r.energies.momentum[1], r.energies.momentum[2]})
+    for (double v : {r.time, r.dt, r.energies.kinetic, r.energies.internal, r.energies.stabilisation,
+                     r.energies.momentum[0], r.energies.momentum[1], r.energies.momentum[2]})
       values.push_back(v);
   }
   h5.writeDataset("/run/history_step", steps, {steps.size()});
-  h5.writeDataset("/run/history_values", values, {steps.size(), 7});
+  h5.writeDataset("/run/history_values", values, {steps.size(), history_columns});
 }
 
 std::vector<HistoryRow> readHistoryRows(const Hdf5Reader& h5) {
   const std::vector<std::int64_t> steps = h5.read<std::int64_t>("/run/history_step");
   const std::vector<double> values = h5.read<double>("/run/history_values");
-  if (values.size() != 7 * steps.size()) h5.fail("use the history: steps and values differ in length");
+  if (values.size() != history_columns * steps.size()) h5.fail("use the history: steps and values differ in length");
   std::vector<HistoryRow> history(steps.size());
   for (std::size_t i = 0; i < steps.size(); ++i) {
-    const double* v = &values[7 * i];
+    const double* v = &values[history_columns * i];
     history[i].step = steps[i];
     history[i].time = v[0];
     history[i].dt = v[1];
     history[i].energies.kinetic = v[2];
     history[i].energies.internal = v[3];
-    history[i].energies.momentum = Vec3(v[4], v[5], v[6]);
+    history[i].energies.stabilisation = v[4];
+    history[i].energies.momentum = Vec3(v[5], v[6], v[7]);
   }
   return history;
 }
@@ -189,6 +195,7 @@ void writeCheckpoint(const std::filesystem::path& file, const otm::Model& model,
   h5.writeAttribute("integrator_dt_next", s.dt_next);
   h5.writeAttribute("integrator_dt_initial", s.dt_initial);
   h5.writeAttribute("integrator_steps", static_cast<std::int64_t>(s.steps));
+  h5.writeAttribute("integrator_stabilisation_energy", s.stabilisation_energy);
   const RunLoopState& loop = checkpoint.loop;
   h5.writeAttribute("run_next_output", loop.next_output);
   h5.writeAttribute("run_next_checkpoint", loop.next_checkpoint);
@@ -250,6 +257,7 @@ Checkpoint readCheckpoint(const std::filesystem::path& file, otm::Model& model,
   c.integrator.dt_next = h5.readDoubleAttribute("integrator_dt_next");
   c.integrator.dt_initial = h5.readDoubleAttribute("integrator_dt_initial");
   c.integrator.steps = h5.readInt64Attribute("integrator_steps");
+  c.integrator.stabilisation_energy = h5.readDoubleAttribute("integrator_stabilisation_energy");
   c.loop.next_output = h5.readDoubleAttribute("run_next_output");
   c.loop.next_checkpoint = h5.readDoubleAttribute("run_next_checkpoint");
   c.loop.wall_seconds = h5.readDoubleAttribute("run_wall_seconds");

@@ -9,10 +9,16 @@ namespace kessler::io {
 
 namespace {
 
-nlohmann::json vec(const Vec3& v) { return nlohmann::json::array({v[0], v[1], v[2]}); }
+nlohmann::json vec(const Vec3& v) {
+  return nlohmann::json::array({v[0], v[1], v[2]});
+}
 
 nlohmann::json energiesJson(const otm::Energies& e) {
-  return {{"kinetic_J", e.kinetic}, {"internal_J", e.internal}, {"total_J", e.total()}, {"momentum_kg_m_s", vec(e.momentum)}};
+  return {{"kinetic_J", e.kinetic},
+          {"internal_J", e.internal},
+          {"stabilisation_J", e.stabilisation},
+          {"total_J", e.total()},
+          {"momentum_kg_m_s", vec(e.momentum)}};
 }
 
 }  // namespace
@@ -69,11 +75,11 @@ void writeSummary(const std::filesystem::path& file, const RunRecord& record, co
 }
 
 void writeHistory(const std::filesystem::path& file, const std::vector<HistoryRow>& history) {
-  std::string text = "step,time_s,dt_s,kinetic_J,internal_J,total_J,momentum_x,momentum_y,momentum_z\n";
+  std::string text = "step,time_s,dt_s,kinetic_J,internal_J,stabilisation_J,total_J,momentum_x,momentum_y,momentum_z\n";
   for (const HistoryRow& r : history)
-    text += fmt::format("{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}\n", r.step, r.time, r.dt,
-                        r.energies.kinetic, r.energies.internal, r.energies.total(), r.energies.momentum[0],
-                        r.energies.momentum[1], r.energies.momentum[2]);
+    text += fmt::format("{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}\n", r.step, r.time, r.dt,
+                        r.energies.kinetic, r.energies.internal, r.energies.stabilisation, r.energies.total(),
+                        r.energies.momentum[0], r.energies.momentum[1], r.energies.momentum[2]);
   writeTextAtomically(file, text);
 }
 

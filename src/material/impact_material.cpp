@@ -49,7 +49,7 @@ struct UpdateConstants {
   const std::optional<strength::JohnsonCookDamage>* damage;
 };
 
-// One point (DESIGN.md §2 step 7). The deviator comes from the log-strain radial return; the
+// One point (docs/theory.md §5). The deviator comes from the log-strain radial return; the
 // pressure from the equation of state at the new density and an internal energy updated with
 // the work of the step, p dV by a predictor-corrector (trapezoidal rule), the deviatoric work by
 // the midpoint rule; the artificial viscosity q adds to the pressure and its work heats.
@@ -81,7 +81,13 @@ void updatePoint(const Eos& eos, const Law& law, const UpdateConstants& k, Point
   const eos::State guess = eos.evaluate(rho, points.energy[p]);
   const double c_bulk = std::sqrt(std::max(guess.sound_speed2, 0.0) + 4.0 * shear / (3.0 * rho));
   const double div_v = k.dt > 0.0 ? std::log(j_step) / k.dt : 0.0;
-  const double q = div_v < 0.0 ? rho * (k.c_quadratic * h * h * div_v * div_v - k.c_linear * h * c_bulk * div_v) : 0.0;
+  // The limiter phi (Christensen 1990, as in LULESH) takes both terms off where the compression is
+  // smooth over the point's support, the linear as (1 - phi) and the quadratic as (1 - phi^2), so that
+  // a smooth compression is not heated (Noh 1987); left whole, the linear term heated a 2 km/s
+  // plate's shocked plateau 6% above the Rankine-Hugoniot energy (docs/theory.md §5).
+  const double phi = points.viscosity_limiter[p];
+  const double linear = (1.0 - phi) * k.c_linear, quadratic = (1.0 - phi * phi) * k.c_quadratic;
+  const double q = div_v < 0.0 ? rho * (quadratic * h * h * div_v * div_v - linear * h * c_bulk * div_v) : 0.0;
 
   // Deviator by radial return (plastic strain, elastic b_e updated in place); none once failed.
   strength::ReturnResult r;
@@ -106,7 +112,11 @@ void updatePoint(const Eos& eos, const Law& law, const UpdateConstants& k, Point
   const Mat3 d_dev = d_dt - d_dt.trace() / 3.0 * Mat3::Identity();
   const double deviatoric_work =
       0.5 * (s_old + r.deviatoric_stress).cwiseProduct(d_dev).sum() * 0.5 * (volume + volume_old);
-  const double viscous_work = -q * dv;
+  // The viscous pressure's work with the mean of the old q (which the step's forces carried) and the
+  // new one (which the next step's will), as the pressure's: booked with the new q alone, it differs
+  // from what the forces did wherever the compression rate changes from step to step (in flyer-plate
+  // by 0.3% of the energy jump; docs/theory.md §5).
+  const double viscous_work = -0.5 * (q_old + q) * dv;
 
   const double e_old = points.energy[p];
   const double e_pred = e_old + (-p_old * dv + deviatoric_work + viscous_work) / m;
@@ -149,8 +159,8 @@ void updatePoint(const Eos& eos, const Law& law, const UpdateConstants& k, Point
   points.viscous_pressure[p] = q;
   const double c = std::sqrt(std::max(state.sound_speed2, 0.0) + 4.0 * shear / (3.0 * rho));
   // Signal speed with the viscosity correction of the stable step (e.g. LS-DYNA theory manual):
-  // dt = h / (Q + sqrt(Q^2 + c^2)), Q = C_l c + C_q h |div v| when compressing.
-  const double Q = div_v < 0.0 ? k.c_linear * c + k.c_quadratic * h * std::abs(div_v) : 0.0;
+  // dt = h / (Q + sqrt(Q^2 + c^2)), Q = C_l c + C_q h |div v| (limited as q) when compressing.
+  const double Q = div_v < 0.0 ? linear * c + quadratic * h * std::abs(div_v) : 0.0;
   points.sound_speed[p] = Q + std::sqrt(Q * Q + c * c);
   if (damage >= 1.0 && !failed) {
     points.fail(p);  // fractured: from now on compression only

@@ -1,7 +1,7 @@
 #pragma once
 // The material of an impact body: an equation of state for the pressure, J2 plasticity for
 // the deviator (with melting), heating, artificial bulk viscosity and optional Johnson-Cook
-// damage, composed into one Material (DESIGN.md §1). The models are chosen once per material
+// damage, composed into one Material (docs/materials.md). The models are chosen once per material
 // (variants visited once per range of points), never per point.
 #include "material/eos/eos.hpp"
 #include "material/material.hpp"
@@ -21,17 +21,21 @@ struct ThermalParameters {
   void check() const;
 };
 
-// Linear and quadratic bulk viscosity (von Neumann-Richtmyer; e.g. Benson, CMAME 99, 1992):
-//   q = rho l (C_q l |div v| - C_l c) div v   when compressing (div v < 0), else 0.
+// Linear and quadratic bulk viscosity (von Neumann-Richtmyer; e.g. Benson, CMAME 99, 1992) with
+// Christensen's monotonic limiter phi on both terms, as in LULESH (PointStore::viscosity_limiter, set
+// by the discretisation):
+//   q = rho l ((1 - phi^2) C_q l |div v| - (1 - phi) C_l c) div v   when compressing, else 0.
+// C_l = 0.5 as LULESH's monotonic q: with 0.06 a 6 km/s shock rings behind its front in 3-D
+// (docs/theory.md §5).
 struct ViscosityParameters {
-  double linear = 0.06;
+  double linear = 0.5;
   double quadratic = 1.5;
   void check() const;
 };
 
 struct ImpactMaterialParameters {
-  eos::Eos eos;                                   // also gives the reference density
-  double shear_modulus = 0.0;                     // G, Pa (0: no strength)
+  eos::Eos eos;                // also gives the reference density
+  double shear_modulus = 0.0;  // G, Pa (0: no strength)
   strength::Yield yield = strength::NoStrength{};
   std::optional<strength::JohnsonCookDamageParameters> damage;
   ThermalParameters thermal;

@@ -32,8 +32,8 @@ constexpr const char* taylor_quinney =
     "Taylor-Quinney coefficient 0.9: the customary value for metals "
     "(Taylor & Quinney 1934, Proc. R. Soc. A 143, 307)";
 constexpr const char* viscosity =
-    "bulk viscosity linear 0.06, quadratic 1.5: Kessler's defaults "
-    "(Benson 1992, CMAME 99), not a material property";
+    "bulk viscosity linear 0.5, quadratic 1.5, both with Christensen's monotonic limiter as in LULESH: "
+    "Kessler's defaults (Benson 1992, CMAME 99; docs/theory.md §5), not a material property";
 
 eos::MieGruneisen mieGruneisen(double density, double sound_speed, double slope, double gamma0) {
   return eos::MieGruneisen(
@@ -91,32 +91,32 @@ ThermalParameters thermal(double specific_heat) {
   return t;
 }
 
-// Al 6061-T6 JC damage set (REFERENCE.md: "commonly cited; verify"), with the melting point of
+// Al 6061-T6 JC damage set (commonly cited, no primary source found), with the melting point of
 // the JC row it belongs to.
 strength::JohnsonCookDamageParameters al6061Damage() {
   return johnsonCookDamage(-0.77, 1.45, -0.47, 0.0, 1.6, 925.0);
 }
 
 constexpr const char* al6061_damage_source =
-    "JC damage D1 -0.77, D2 1.45, D3 -0.47, D4 0, D5 1.6, Tm 925 K (of the 6061-T6 JC row): REFERENCE.md 'commonly "
-    "cited; verify', no primary source";
+    "JC damage D1 -0.77, D2 1.45, D3 -0.47, D4 0, D5 1.6, Tm 925 K (of the 6061-T6 JC row): commonly "
+    "cited in the impact literature, no primary source";
 
-// Eigenerosion's G_c (DESIGN.md §1: the default failure model). Liao et al. 2022 (Table 1) give
+// Eigenerosion's G_c (the default failure model, docs/materials.md). Liao et al. 2022 (Table 1) give
 // 100 kJ/m^2 for Al 6061-T6 and 250 kJ/m^2 for OFHC copper; these are far above the plane-strain
 // K_Ic^2/E of the alloys (~10-20 kJ/m^2): they include the plastic work of ductile tearing at the
 // resolution of an OTM model. The other aluminium entries take Liao's 6061-T6 value as an
-// engineering estimate (no published value for them in REFERENCE.md).
+// engineering estimate (no published value for them was found).
 constexpr double al6061_fracture_energy = 100e3;
 constexpr double copper_fracture_energy = 250e3;
 constexpr const char* al6061_fracture_source =
     "fracture energy G_c 100 kJ/m^2 (eigenerosion): Liao et al. 2022, Table 1 (Al 6061-T6)";
 constexpr const char* al_estimated_fracture_source =
     "fracture energy G_c 100 kJ/m^2 (eigenerosion): engineering estimate, Liao et al. 2022's Al 6061-T6 value "
-    "(Table 1) taken for this alloy, for which no value is published in REFERENCE.md";
+    "(Table 1) taken for this alloy, for which no published value was found";
 
 constexpr const char* damage_off =
     " The JC damage set is stored in `damage`, but a deck's `{ library: NAME }` leaves JC damage off (the default "
-    "failure model is eigenerosion, DESIGN.md §1); `failure: { model: johnson-cook }` turns this set on.";
+    "failure model is eigenerosion, docs/materials.md); `failure: { model: johnson-cook }` turns this set on.";
 
 Entry al6061() {
   Entry e;
@@ -143,7 +143,7 @@ Entry al6061() {
   e.notes =
       "Liao et al. give Tm = 1200 K although 6061 melts at about 855-925 K; the published 1200 K is kept, so "
       "thermal softening is weaker than the real alloy's. rho0 2703 is Steinberg's (Liao use 2700). The "
-      "6061-T6 JC strength row of REFERENCE.md (A 324 MPa, B 114 MPa, ...) is not used. The damage set's D1 < 0 "
+      "commonly cited 6061-T6 JC strength row (A 324 MPa, B 114 MPa, ...) is not used. The damage set's D1 < 0 "
       "makes the failure strain non-positive for triaxiality above about 1.35, where min_failure_strain "
       "(0 unless set) governs." +
       std::string(damage_off);
@@ -166,14 +166,14 @@ Entry al2024() {
       fmt::format("shear modulus G 28.6 GPa: {}", steinberg),
       fmt::format("JC strength A 265 MPa, B 426 MPa, n 0.34, C 0.015, m 1.0, Tm 775 K, rate0 1/s, T0 293 K: {}",
                   jc1983),
-      fmt::format("JC damage D1 0.13, D2 0.13, D3 -1.5, D4 0.011, D5 0: {} (as attributed by REFERENCE.md)", jc1985),
+      fmt::format("JC damage D1 0.13, D2 0.13, D3 -1.5, D4 0.011, D5 0: {} (as commonly attributed)", jc1985),
       fmt::format("specific heat 875 J/(kg K): {}", jc1983),
       taylor_quinney,
       viscosity,
   };
   e.notes =
       "Tm 775 K is Johnson & Cook's value for 2024-T351 (near the alloy's solidus). The 1985 paper tested "
-      "OFHC copper, Armco iron and 4340 steel; REFERENCE.md attributes the 2024-T351 damage set to it, which "
+      "OFHC copper, Armco iron and 4340 steel; secondary sources attribute the 2024-T351 damage set to it, which "
       "is worth verifying against the primary source." +
       std::string(damage_off);
   return e;
@@ -214,7 +214,7 @@ Entry ly12() {
       viscosity,
   };
   e.notes =
-      "Fan et al.'s EOS constants are not in REFERENCE.md: the EOS is a stand-in, Steinberg's Al 2024 "
+      "Fan et al.'s EOS constants are not available here: the EOS is a stand-in, Steinberg's Al 2024 "
       "Hugoniot (c0, s, Gamma0) on Fan's density 2700 kg/m^3 (Steinberg's 2024 has 2785 kg/m^3, so the "
       "bulk modulus rho0 c0^2 is 3% below Steinberg's). Gamma0 is 2.00 in the EOS and Fan's 1.97 in Tm(J). "
       "No damage set is published for LY12.";
@@ -255,7 +255,7 @@ Entry copper() {
   e.notes =
       "Johnson-Cook is the default strength: Liao et al.'s power-law set (entry OFHC-copper-powerlaw) has "
       "m = 1 with rate0 = 1/s, which taken literally multiplies the yield stress by ~1e6 at impact strain "
-      "rates (REFERENCE.md §1)." +
+      "rates (docs/strength.md)." +
       std::string(damage_off);
   return e;
 }
@@ -306,9 +306,9 @@ Entry steel4340() {
   e.parameters.thermal = thermal(477.0);
   e.sources = {
       fmt::format("Mie-Gruneisen rho0 7850 kg/m^3, c0 4570 m/s, s 1.49, Gamma0 2.17: generic steel after {} "
-                  "(REFERENCE.md: 'approx., verify')",
+                  "(approximate, not checked against a primary source)",
                   steinberg),
-      "shear modulus G 80 GPa: generic steel (REFERENCE.md: 'approx., verify')",
+      "shear modulus G 80 GPa: generic steel (approximate)",
       fmt::format("JC strength A 792 MPa, B 510 MPa, n 0.26, C 0.014, m 1.03, Tm 1793 K, rate0 1/s, T0 293 K: {}",
                   jc1983),
       fmt::format("JC damage D1 0.05, D2 3.44, D3 -2.12, D4 0.002, D5 0.61: {}", jc1985),
@@ -319,7 +319,7 @@ Entry steel4340() {
   e.notes =
       "The EOS and shear modulus are approximate values for a generic steel, not a 4340 measurement. The "
       "damage set of Zhao & Song 2010 (Explosion and Shock Waves) is garbled as printed (D1 0.47e-5, D2 -9.0, "
-      "...; REFERENCE.md), so Johnson & Cook's 4340 set is used. No fracture energy: REFERENCE.md gives none "
+      "...), so Johnson & Cook's 4340 set is used. No fracture energy: none was found published "
       "for steel, so eigenerosion is off unless the deck sets `fracture_energy` (K_Ic^2/E of 4340 is of order "
       "10-50 kJ/m^2 depending on the temper)." +
       std::string(damage_off);

@@ -36,8 +36,8 @@ void NodeStore::permute(const std::vector<LocalIndex>& order) {
 
 void PointStore::permute(const std::vector<LocalIndex>& order) {
   permuteAll(order, x.size(), id, body, x, v, mass, volume, volume0, spacing0, F, dF, stress, energy, sound_speed,
-             plastic_strain, temperature, damage, strain_energy, ductile_work, viscous_pressure, be, eroded,
-             passes_through, carrier, lambda);
+             plastic_strain, temperature, damage, strain_energy, ductile_work, viscous_pressure, viscosity_limiter,
+             volume_defect, be, eroded, passes_through, carrier, lambda);
 }
 
 void NodeStore::resize(std::size_t n) {
@@ -73,6 +73,8 @@ void PointStore::resize(std::size_t n) {
   strain_energy.resize(n, 0.0);
   ductile_work.resize(n, 0.0);
   viscous_pressure.resize(n, 0.0);
+  viscosity_limiter.resize(n, 0.0);
+  volume_defect.resize(n, 0.0);
   be.resize(n, Mat3::Identity());
   eroded.resize(n, 0);
   passes_through.resize(n, 0);

@@ -1,5 +1,5 @@
 #pragma once
-// The particle store: structure-of-arrays for nodes and material points (DESIGN.md §2).
+// The particle store: structure-of-arrays for nodes and material points (docs/theory.md §1).
 // Points are stored grouped by body so that each body is one contiguous range and a
 // material law runs over a whole range at once. Loops run over the owned ranges
 // [0, owned) so that MPI ghosts can be appended behind them later.
@@ -50,8 +50,15 @@ struct PointStore {
   std::vector<double> strain_energy;     // energy density driving eigenerosion, J/m^3 of reference volume
   std::vector<double> ductile_work;      // plastic work above the triaxiality cut-off, J/m^3 of reference volume
   std::vector<double> viscous_pressure;  // artificial bulk viscosity q, Pa (part of stress)
-  std::vector<Mat3> be;                  // elastic left Cauchy-Green tensor (plasticity)
-  std::vector<std::uint8_t> eroded;      // 1: failed (eigenerosion or damage): no strength, see failed()
+  // Christensen's limiter phi in [0, 1] of the step's compression (docs/theory.md §5): 1 where the
+  // compression is smooth over the point's support, 0 in a shock; the viscosity acts on the rest.
+  // Set by the discretisation every step before the material update.
+  std::vector<double> viscosity_limiter;
+  // The volume strain the averaging took away: over the steps, the sum of tr(dF - I) less its patch
+  // average (volume averaging; docs/theory.md §4). Drives the stabilisation pressure.
+  std::vector<double> volume_defect;
+  std::vector<Mat3> be;              // elastic left Cauchy-Green tensor (plasticity)
+  std::vector<std::uint8_t> eroded;  // 1: failed (eigenerosion or damage): no strength, see failed()
   // Debris capture (solver/otm/debris.hpp), for eroded points: bit b set if body b cannot catch
   // the point (its own body and the bodies that body touched when it was released; 0 before),
   // and the body whose nodes carry it now: its own while it is failed but not yet released,

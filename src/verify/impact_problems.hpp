@@ -1,9 +1,12 @@
 #pragma once
 // Verification problems of the impact materials (whole runs).
 #include "core/types.hpp"
+#include "solver/otm/settings.hpp"
 #include "verify/problem.hpp"
 
 #include <fmt/format.h>
+
+#include <vector>
 
 namespace kessler::verify {
 
@@ -20,6 +23,47 @@ struct FlyerPlateResult {
 
 FlyerPlateResult runFlyerPlate();
 Outcome flyerPlate();
+
+// One slab of the target at the end of hugoniot-3d, mass-weighted (for the shock study).
+struct Slab {
+  double z, velocity, density, max_density, pressure, viscous_pressure, energy;  // SI
+};
+
+struct Hugoniot3dResult {
+  double particle_velocity, shock_speed, pressure, density;  // plateau averages (pressure without viscosity)
+  double max_density;                                        // the densest point of the plateau, kg/m^3
+  double max_pressure;  // the largest pressure of a plateau point, viscosity included, Pa
+  double reference_velocity, reference_shock_speed, reference_pressure, reference_density, reference_density0;
+  long steps, points, plateau_points;
+  double energy_change;       // relative change of the total energy over the run
+  std::vector<Slab> profile;  // slabs of h/2 along the target at the end
+};
+
+struct Shell {
+  double radius, density, radial_velocity, energy;  // mass-weighted over the shell
+};
+
+struct NohResult {
+  double density = 0.0;         // mass-weighted density of the plateau 0.25 r_s < r < 0.75 r_s
+  double centre_density = 0.0;  // within 0.25 r_s (wall heating)
+  double shock_radius = 0.0;    // where the radial velocity crosses -1/2
+  double reference_density = 0.0, reference_shock_radius = 0.0;
+  double initial_energy = 0.0;  // kinetic, J
+  double energy_error = 0.0;    // relative change of the total energy over the run
+  long steps = 0, points = 0;
+  std::vector<Shell> profile;  // shells of r_s/40 out to 2 r_s at the end
+};
+
+// mesh_size: the Gmsh target edge length of the unit sphere.
+NohResult runNoh3d(double mesh_size);
+Outcome noh3d();
+
+// mesh_size: the Gmsh target edge length, m.
+// mesh_size: the Gmsh target edge length, m; settings: the solver's (end_time is set here);
+// one_body: one slab whose halves meet at the impact speed (no contact between bodies) instead of a
+// flyer striking a target.
+Hugoniot3dResult runHugoniot3d(double mesh_size, otm::Settings settings = {}, bool one_body = true);
+Outcome hugoniot3d();
 
 struct TaylorBarResult {
   double length = 0.0;            // final length, m

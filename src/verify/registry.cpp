@@ -1,6 +1,6 @@
-#include "verify/problem.hpp"
 #include "verify/eos_problems.hpp"
 #include "verify/impact_problems.hpp"
+#include "verify/problem.hpp"
 #include "verify/problems.hpp"
 #include "verify/strength_problems.hpp"
 
@@ -26,6 +26,9 @@ const std::vector<Problem>& problems() {
       {"adiabatic-heating", "temperature rise of plastic work in isochoric shear against the closed form",
        adiabaticHeating},
       {"flyer-plate", "symmetric Al 6061-T6 plate impact at 2 km/s against the Hugoniot", flyerPlate},
+      {"hugoniot-3d", "symmetric Al 6061-T6 plate impact at 6.18 km/s on unstructured points against the Hugoniot",
+       hugoniot3d},
+      {"noh-3d", "spherical Noh problem (ideal gas): post-shock density at two resolutions", noh3d},
       {"taylor-bar", "copper Taylor bar: final length and footprint radius", taylorBar},
       {"taylor-bar-coarse", "copper Taylor bar at 1 mm (CI): length and radius, length converging", taylorBarCoarse},
       {"griffith", "centre-cracked plate fails at Griffith's stress (eigenerosion)", griffith},

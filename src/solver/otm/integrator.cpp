@@ -6,6 +6,7 @@
 #include "solver/otm/integrator_assembly.hpp"
 #include "solver/otm/integrator_ordering.hpp"
 #include "solver/otm/release.hpp"
+#include "solver/otm/volume_patch.hpp"
 
 #include <Eigen/Eigenvalues>
 
@@ -35,7 +36,24 @@ void Integrator::initialise() {
   neighbourhoods_.update(model_);
   timers_.add("search", neighbourhoods_.searchSeconds());
   timers_.add("shape functions", neighbourhoods_.shapeSeconds());
+  initialVolumeRates();
   dt_next_ = dt_initial_ = stableStep();
+}
+
+// div v = sum_a v_a . grad N_a of each point in the initial velocity field, for the first step's
+// volume-change bound (stableStep): a cold gas has no sound speed to set it, and no step has yet
+// measured its rate.
+void Integrator::initialVolumeRates() {
+  const PointStore& points = model_.points;
+  const Connectivity& conn = model_.connectivity;
+  volume_rate_.assign(static_cast<std::size_t>(points.owned), 0.0);
+#pragma omp parallel for schedule(static)
+  for (LocalIndex p = 0; p < points.owned; ++p) {
+    if (points.debris(p)) continue;
+    double div_v = 0.0;
+    for (Index e = conn.offset[p]; e < conn.offset[p + 1]; ++e) div_v += model_.nodes.v[conn.node[e]].dot(conn.dN[e]);
+    volume_rate_[p] = div_v;
+  }
 }
 
 void Integrator::restore(const IntegratorState& state) {
@@ -44,6 +62,7 @@ void Integrator::restore(const IntegratorState& state) {
   dt_next_ = state.dt_next;
   dt_initial_ = state.dt_initial;
   steps_ = state.steps;
+  stabilisation_energy_ = state.stabilisation_energy;
 }
 
 void Integrator::step() {
@@ -64,7 +83,7 @@ void Integrator::advance(double dt) {
   }
   {
     ScopedPhase phase(timers_, "node update");
-    // Discrete Euler-Lagrange equations for a variable step (DESIGN.md §2 step 5).
+    // Discrete Euler-Lagrange equations for a variable step (docs/theory.md §4 step 2).
     updateNodes(dt, 0.5 * (dt_last_ + dt));
   }
   {
@@ -74,6 +93,7 @@ void Integrator::advance(double dt) {
   {
     ScopedPhase phase(timers_, "constitutive");
     updateMaterials(dt);
+    stabilisation_energy_ += patch_.closeStep(model_.points, settings_.volume_stabilisation);
   }
   {
     ScopedPhase phase(timers_, "erosion");
@@ -100,7 +120,13 @@ void Integrator::advance(double dt) {
 // Lumped mass, momentum and internal force gathered over each node's points
 // (solver/otm/integrator_assembly.hpp).
 void Integrator::assembleNodes() {
-  otm::assembleNodes(model_.connectivity, model_.points, model_.nodes, loads_);
+  if (!settings_.volume_averaging) {
+    otm::assembleNodes(model_.connectivity, model_.points, model_.nodes, loads_);
+    return;
+  }
+  patch_.forcePressure(model_.connectivity, model_.nodes.owned, model_.points, settings_.volume_stabilisation,
+                       force_pressure_);
+  otm::assembleNodes(model_.connectivity, model_.points, model_.nodes, loads_, &force_pressure_);
 }
 
 void Integrator::updateNodes(double dt, double dt_average) {
@@ -132,7 +158,7 @@ void Integrator::updateNodes(double dt, double dt_average) {
   }
 }
 
-// Material points follow the nodes (DESIGN.md §2 step 6), written with displacements so that
+// Material points follow the nodes (docs/theory.md §4 step 3), written with displacements so that
 // round-off does not grow with the distance from the origin:
 //   x_p += sum_a N_a u_a,  dF = I + sum_a u_a (x) grad N_a,  F <- dF F,  V <- det(dF) V.
 // Velocities take the nodal increment (FLIP-style), which conserves momentum exactly and,
@@ -185,58 +211,18 @@ void Integrator::updatePoints() {
   if (bad < points.owned)
     failAtPoint(
         bad, fmt::format("volume inverted or collapsed: det(dF) = {:.6g} over the step", points.dF[bad].determinant()));
-  if (settings_.volume_averaging) averageVolumeChange();
+  stabilisation_energy_ += patch_.apply(conn, model_.nodes.owned, settings_.volume_averaging,
+                                        settings_.volume_stabilisation, points, j_point_);
+  volume_rate_.resize(static_cast<std::size_t>(points.owned));
 #pragma omp parallel for schedule(static)
   for (LocalIndex p = 0; p < points.owned; ++p) {
-    if (points.debris(p)) continue;
+    if (points.debris(p)) {
+      volume_rate_[p] = 0.0;
+      continue;
+    }
     points.F[p] = points.dF[p] * points.F[p];
     points.volume[p] *= j_point_[p];
-  }
-}
-
-// Volume averaging (F-bar over the nodal patch; docs/theory.md §4): the step's volume change
-// det(dF) of the points of the bodies (intact or failed, not debris) is averaged, mass-weighted, to the nodes and
-// interpolated back, and each point's dF is scaled isotropically to that average. Point-wise volume noise, which in a
-// strong shock left some points at twice the density of their neighbours, is removed; the deviatoric part of dF, the
-// motion and the momentum are untouched. A body at rest stays bitwise at rest (the weights are normalised by the same
-// sums).
-void Integrator::averageVolumeChange() {
-  PointStore& points = model_.points;
-  const Connectivity& conn = model_.connectivity;
-  j_node_.resize(static_cast<std::size_t>(model_.nodes.size()));
-  j_weight_.resize(static_cast<std::size_t>(points.owned));
-#pragma omp parallel
-  {
-    // The weights packed per point first, so that the gather reads one record per entry.
-#pragma omp for schedule(static)
-    for (LocalIndex p = 0; p < points.owned; ++p)
-      j_weight_[p] = points.debris(p) ? std::array<double, 2>{0.0, 0.0}
-                                      : std::array<double, 2>{points.mass[p], points.mass[p] * j_point_[p]};
-#pragma omp for schedule(static)
-    for (LocalIndex a = 0; a < model_.nodes.owned; ++a) {
-      double m = 0.0, mj = 0.0;
-      for (Index k = conn.node_offset[a]; k < conn.node_offset[a + 1]; ++k) {
-        const Connectivity::NodeSlot slot = conn.node_slot[k];
-        const double N = conn.N[slot.entry];
-        const std::array<double, 2>& w = j_weight_[slot.point];
-        m += N * w[0];
-        mj += N * w[1];
-      }
-      j_node_[a] = m > 0.0 ? mj / m : 1.0;
-    }
-  }
-#pragma omp parallel for schedule(static)
-  for (LocalIndex p = 0; p < points.owned; ++p) {
-    if (points.debris(p)) continue;
-    double weight = 0.0, average = 0.0;
-    for (Index e = conn.offset[p]; e < conn.offset[p + 1]; ++e) {
-      weight += conn.N[e];
-      average += conn.N[e] * j_node_[conn.node[e]];
-    }
-    if (weight > 0.0 && average > 0.0) {
-      points.dF[p] *= std::cbrt(average / weight / j_point_[p]);
-      j_point_[p] = points.dF[p].determinant();
-    }
+    volume_rate_[p] = std::log(j_point_[p]) / dt_step_;
   }
 }
 
@@ -248,7 +234,7 @@ void Integrator::updateMaterials(double dt) {
 #pragma omp parallel for schedule(static) reduction(min : bad)
   for (LocalIndex p = 0; p < points.owned; ++p)
     if (!points.stress[p].allFinite() || !std::isfinite(points.energy[p]) ||
-        !(points.debris(p) || points.sound_speed[p] > 0.0))  // debris takes no part in the time step
+        !(points.debris(p) || points.sound_speed[p] >= 0.0))  // debris takes no part in the time step
       bad = std::min(bad, p);
   if (bad < points.owned) failAtPoint(bad, "the material update gave a non-finite stress, energy or sound speed");
 }
@@ -266,19 +252,24 @@ double stepLength(const PointStore& points, LocalIndex p) {
   return points.spacing0[p] * smallestStretch(points.F[p]);
 }
 
-// CFL condition over material points: dt = cfl * min_p l_p / c_p (DESIGN.md §2 step 9). The
+// CFL condition over material points: dt = cfl * min_p l_p / c_p (docs/theory.md §4 step 7). The
 // length l_p is the reference spacing times the smallest principal stretch of F: plastic flow
 // keeps the volume (so h0 J^(1/3) would not shrink) while it can flatten the material, and the
-// nodes, to a fraction of their spacing in one direction.
+// nodes, to a fraction of their spacing in one direction. And no point may change its volume by
+// more than cfl/3 (10% at the default) in a step, |div v| dt <= cfl/3, as LULESH's dvovmax bounds
+// it: the bound that sets the step where there is no sound speed (a cold gas, p = 0); elsewhere
+// the viscosity's share of the signal speed makes it redundant.
 double Integrator::stableStep() const {
   const PointStore& points = model_.points;
   double dt = std::numeric_limits<double>::infinity();
 #pragma omp parallel for schedule(static) reduction(min : dt)
   for (LocalIndex p = 0; p < points.owned; ++p) {
     if (points.debris(p)) continue;
-    dt = std::min(dt, stepLength(points, p) / points.sound_speed[p]);
+    if (points.sound_speed[p] > 0.0) dt = std::min(dt, stepLength(points, p) / points.sound_speed[p]);
+    if (volume_rate_[p] != 0.0) dt = std::min(dt, 1.0 / (3.0 * std::abs(volume_rate_[p])));
   }
-  KESSLER_VERIFY(std::isfinite(dt) && dt > 0.0, "no stable time step: every point is debris or the model is empty");
+  KESSLER_VERIFY(std::isfinite(dt) && dt > 0.0,
+                 "no stable time step: every point is debris or at rest without a sound speed, or the model is empty");
   return settings_.cfl * dt;
 }
 
@@ -288,6 +279,7 @@ Energies Integrator::energies() const {
   e.kinetic = deterministicSum(points.owned, 0.0,
                                [&](LocalIndex p) { return 0.5 * points.mass[p] * points.v[p].squaredNorm(); });
   e.internal = deterministicSum(points.owned, 0.0, [&](LocalIndex p) { return points.mass[p] * points.energy[p]; });
+  e.stabilisation = stabilisation_energy_;
   e.momentum = deterministicSum(points.owned, Vec3(Vec3::Zero()),
                                 [&](LocalIndex p) -> Vec3 { return points.mass[p] * points.v[p]; });
   return e;

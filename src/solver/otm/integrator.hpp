@@ -1,5 +1,5 @@
 #pragma once
-// The explicit OTM integrator (DESIGN.md §2; Li, Habbal & Ortiz, IJNME 83, 2010):
+// The explicit OTM integrator (docs/theory.md §4; Li, Habbal & Ortiz, IJNME 83, 2010):
 // nodal mass, momentum and force gathered from material points, the variable-step discrete
 // Euler-Lagrange update of node positions, material points carried by the nodes' motion,
 // constitutive update, new neighbourhoods and shape functions, CFL time step.
@@ -10,6 +10,7 @@
 #include "solver/otm/neighbourhoods.hpp"
 #include "solver/otm/release.hpp"
 #include "solver/otm/settings.hpp"
+#include "solver/otm/volume_patch.hpp"
 
 namespace kessler::otm {
 
@@ -24,8 +25,11 @@ double stepLength(const PointStore& points, LocalIndex p);
 struct Energies {
   double kinetic = 0.0;   // 1/2 sum m_p |v_p|^2
   double internal = 0.0;  // sum m_p e_p
+  // Stored by the volume stabilisation (the work its pressure has done; Settings::volume_stabilisation):
+  // kept apart from the material's internal energy, which it must not heat.
+  double stabilisation = 0.0;
   Vec3 momentum = Vec3::Zero();
-  double total() const { return kinetic + internal; }
+  double total() const { return kinetic + internal + stabilisation; }
 };
 
 // The integrator's own scalar state; with the Model (connectivity included) it is the complete
@@ -36,6 +40,7 @@ struct IntegratorState {
   double dt_next = 0.0;
   double dt_initial = 0.0;
   long steps = 0;
+  double stabilisation_energy = 0.0;  // J, Energies::stabilisation
 };
 
 class Integrator {
@@ -47,7 +52,7 @@ class Integrator {
   // Continues from a checkpoint instead of initialise(): the model (with its connectivity)
   // has been restored; the run then proceeds bitwise as it would have without interruption.
   void restore(const IntegratorState& state);
-  IntegratorState state() const { return {time_, dt_last_, dt_next_, dt_initial_, steps_}; }
+  IntegratorState state() const { return {time_, dt_last_, dt_next_, dt_initial_, steps_, stabilisation_energy_}; }
   // Advances one step of length nextStep() (clipped to end at settings.end_time). A numerical
   // failure throws NumericalError with a message that starts with the step and time.
   void step();
@@ -69,7 +74,7 @@ class Integrator {
   void assembleNodes();
   void updateNodes(double dt, double dt_average);
   void updatePoints();
-  void averageVolumeChange();  // volume averaging of dF (Settings::volume_averaging)
+  void initialVolumeRates();
   void updateMaterials(double dt);
   double stableStep() const;
   [[noreturn]] void failAtPoint(LocalIndex p, const std::string& what) const;
@@ -85,17 +90,19 @@ class Integrator {
     Vec3 du, dv;
   };
   std::vector<NodeIncrement> increment_;
-  std::vector<double> j_point_, j_node_;  // det(dF) per point (after averaging), averaged per node
-  // Per point, the weights of the volume average: m_p and m_p det(dF) (zero for debris).
-  std::vector<std::array<double, 2>> j_weight_;
-  std::vector<PointLoad> loads_;  // assembly scratch, one record per point
-  double dt_step_ = 0.0;          // length of the step in progress
+  std::vector<double> j_point_;      // det(dF) per point (after averaging)
+  std::vector<double> volume_rate_;  // ln det(dF) / dt of each point's last step, 1/s (time step)
+  VolumePatch patch_;
+  std::vector<double> force_pressure_;  // per point, VolumePatch::forcePressure
+  std::vector<PointLoad> loads_;        // assembly scratch, one record per point
+  double dt_step_ = 0.0;                // length of the step in progress
   PhaseTimers timers_;
   double time_ = 0.0;
   double dt_last_ = 0.0;  // dt_k: the step just taken (0 before the first)
   double dt_next_ = 0.0;  // dt_k+1
   double dt_initial_ = 0.0;
   long steps_ = 0;
+  double stabilisation_energy_ = 0.0;
   LocalIndex eroded_ = 0;  // points eigenerosion has failed so far
 };
 

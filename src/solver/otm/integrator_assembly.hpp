@@ -1,5 +1,5 @@
 #pragma once
-// Step 3-4 of the OTM step (DESIGN.md §2): lumped nodal mass m_a = sum_p N_a m_p, momentum
+// Step 3-4 of the OTM step (docs/theory.md §4 step 1): lumped nodal mass m_a = sum_p N_a m_p, momentum
 // l_a = sum_p N_a m_p v_p and internal force f_a = -sum_p V_p sigma_p grad N_a.
 // Two passes: a point-major pass packs what every entry of a point needs (m_p, m_p v_p and
 // -V_p sigma_p, zero for debris) into one contiguous record per point; the node-major
@@ -20,7 +20,10 @@ struct PointLoad {
 };
 
 // Fills nodes.mass, nodes.momentum and nodes.force for the owned nodes. `loads` is scratch,
-// resized to the number of points (kept between calls so the time loop does not allocate).
-void assembleNodes(const Connectivity& conn, const PointStore& points, NodeStore& nodes, std::vector<PointLoad>& loads);
+// resized to the number of points (kept between calls so the time loop does not allocate). With
+// `force_pressure` (per point; VolumePatch::forcePressure) the isotropic part of each point's stress
+// in the force is that pressure instead of its own.
+void assembleNodes(const Connectivity& conn, const PointStore& points, NodeStore& nodes, std::vector<PointLoad>& loads,
+                   const std::vector<double>* force_pressure = nullptr);
 
 }  // namespace kessler::otm

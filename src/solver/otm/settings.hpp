@@ -13,8 +13,8 @@ struct RigidWall {
 };
 
 struct Settings {
-  double end_time = 0.0;        // s
-  double cfl = 0.3;             // factor on the CFL time step
+  double end_time = 0.0;  // s
+  double cfl = 0.3;       // factor on the CFL time step
   // LME locality, beta = gamma / h^2: 4, the local end of Arroyo & Ortiz's range (0.8-4), gives
   // ~25 nodes per point instead of ~76 at 1.8, a third of the work and memory, and every
   // verification closer to its reference (docs/performance.md, docs/validation.md).
@@ -22,21 +22,27 @@ struct Settings {
   // Shape functions below this are cut off: r = h sqrt(-ln tol / gamma) (1.52 h at gamma 4).
   // 1e-4 instead of 1e-6: results within 1e-3 (docs/performance.md).
   double lme_tolerance = 1e-4;
-  int min_neighbours = 12;      // enlarge the search radius until at least this many nodes
-  long max_steps = 0;           // 0: no limit
+  int min_neighbours = 12;  // enlarge the search radius until at least this many nodes
+  long max_steps = 0;       // 0: no limit
   // Failure diagnosis (solver/otm/diagnostics.hpp): the run stops when the time step falls below
   // min_dt_fraction of the initial one, or the total energy exceeds (1 + max_energy_growth) times
   // the initial total energy.
   double min_dt_fraction = 1e-3;
   double max_energy_growth = 0.1;
-  // Seizing contact (DESIGN.md §1): the nodes of another body join a point's neighbourhood
+  // Seizing contact (docs/theory.md §3): the nodes of another body join a point's neighbourhood
   // only when that body's nearest node lies within contact_distance * h of the point. A point
   // sits about h/4 inside its own surface, so 1.0 couples across a gap of roughly h/2.
   double contact_distance = 1.0;
-  // Volume averaging (F-bar over the nodal patch, Integrator::averageVolumeChange): the step's
-  // volume change of each point is replaced by its nodal-patch average. Without it, strong shocks
-  // overcompress scattered points (docs/theory.md §8).
+  // Volume averaging (F-bar over the nodal patch, solver/otm/volume_patch.hpp): the step's volume
+  // change of each point is replaced by its nodal-patch average. Without it, strong shocks
+  // overcompress scattered points (docs/theory.md §4).
   bool volume_averaging = true;
+  // Its stabilisation: a pressure -alpha rho c^2 d on the volume strain d that the averaging took away
+  // (PointStore::volume_defect), alpha times the point's longitudinal modulus. With alpha = 1 the
+  // nodes feel each point's own volumetric stiffness, so the averaged update has no zero-energy mode
+  // (the crushed axis of a plastic Taylor bar), while the state the material sees (density, pressure,
+  // heating) stays the patch average; smaller alpha trades the one for the other (docs/theory.md §4).
+  double volume_stabilisation = 1.0;
   // Visibility across cracks (docs/theory.md §8): a point does not take nodes of its own body that
   // lie behind eroded material, so crack faces separate. Needed for brittle crack growth
   // (`griffith` converges with it, diverges without); off by default because with the scattered
@@ -49,8 +55,8 @@ struct Settings {
   // passes through every body (a Whipple shield's rear wall would never be hit).
   bool debris_capture = true;
   std::vector<RigidWall> walls;
-  // Eigenerosion (DESIGN.md §2 step 8): radius of the ball B_eps as a multiple of the point
-  // spacing h.
+  // Eigenerosion (Pandolfi & Ortiz 2012; docs/theory.md §8): radius of the ball B_eps as a
+  // multiple of the point spacing h.
   double erosion_radius = 2.0;
 };
 

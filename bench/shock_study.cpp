@@ -1,0 +1,86 @@
+// Shock study (docs/validation.md): the hugoniot-3d problem (or with `--noh`, the noh-3d problem at the
+// given mesh sizes of the unit sphere) (symmetric Al 6061-T6 impact at 6.18 km/s on
+// unstructured points) at the mesh sizes given in mm, with its plateau measurements and, with
+// `--profile`, the target's slab profile at the end. Options first: `--two-bodies` (a flyer onto a target
+// instead of one slab whose halves meet), `--no-volume-averaging`,
+// `--stabilisation A` (Settings::volume_stabilisation), `--contact-distance D`, `--cfl X`. Not a test.
+#include "core/error.hpp"
+#include "verify/impact_problems.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <string>
+
+int main(int argc, char** argv) {
+  kessler::otm::Settings settings;
+  bool profile = false, one_body = true, noh = false;
+  int first = 1;
+  for (; first < argc; ++first) {
+    const std::string option = argv[first];
+    if (option == "--profile") {
+      profile = true;
+    } else if (option == "--noh") {
+      noh = true;
+    } else if (option == "--two-bodies") {
+      one_body = false;
+    } else if (option == "--no-volume-averaging") {
+      settings.volume_averaging = false;
+    } else if (option == "--stabilisation" && first + 1 < argc) {
+      settings.volume_stabilisation = std::atof(argv[++first]);
+    } else if (option == "--contact-distance" && first + 1 < argc) {
+      settings.contact_distance = std::atof(argv[++first]);
+    } else if (option == "--cfl" && first + 1 < argc) {
+      settings.cfl = std::atof(argv[++first]);
+    } else {
+      break;
+    }
+  }
+  for (int i = first; noh && i < argc; ++i) {
+    const double mesh = std::atof(argv[i]);
+    kessler::verify::NohResult r;
+    try {
+      r = kessler::verify::runNoh3d(mesh);
+    } catch (const kessler::NumericalError& e) {
+      fmt::print("Noh, mesh {}: stopped: {}\n", mesh, e.what());
+      continue;
+    }
+    fmt::print(
+        "Noh, mesh {}: {} points, {} steps; plateau density {:.2f} ({:+.1f}%), centre {:.2f}, shock at {:.4f} "
+        "(vs {:.3f}), energy {:+.2f}%\n",
+        mesh, r.points, r.steps, r.density, 100 * (r.density / r.reference_density - 1), r.centre_density,
+        r.shock_radius, r.reference_shock_radius, 100 * r.energy_error);
+    if (!profile) continue;
+    fmt::print("{:>7} {:>7} {:>7} {:>7}\n", "r", "rho", "v_r", "e");
+    for (const kessler::verify::Shell& s : r.profile)
+      fmt::print("{:7.4f} {:7.2f} {:7.3f} {:7.3f}\n", s.radius, s.density, s.radial_velocity, s.energy);
+  }
+  for (int i = first; !noh && i < argc; ++i) {
+    const double mesh = std::atof(argv[i]) * 1e-3;
+    kessler::verify::Hugoniot3dResult r;
+    try {
+      r = kessler::verify::runHugoniot3d(mesh, settings, one_body);
+    } catch (const kessler::NumericalError& e) {
+      fmt::print("{:.3f} mm stopped: {}\n", 1e3 * mesh, e.what());
+      continue;
+    }
+    const double rho0 = r.reference_density0;
+    fmt::print(
+        "mesh {:.3f} mm: {} points, {} steps; rho {:.4f} rho0 ({:+.2f}%), densest {:.4f} ({:+.2f}%), P {:.2f} GPa "
+        "({:+.2f}%), up {:.0f} m/s ({:+.2f}%), Us {:.0f} m/s ({:+.2f}%), largest plateau pressure {:.1f} GPa, energy "
+        "{:+.3f}%\n",
+        1e3 * mesh, r.points, r.steps, r.density / rho0, 100 * (r.density / r.reference_density - 1),
+        r.max_density / rho0, 100 * (r.max_density / r.reference_density - 1), 1e-9 * r.pressure,
+        100 * (r.pressure / r.reference_pressure - 1), r.particle_velocity,
+        100 * (r.particle_velocity / r.reference_velocity - 1), r.shock_speed,
+        100 * (r.shock_speed / r.reference_shock_speed - 1), 1e-9 * r.max_pressure, 100 * r.energy_change);
+    if (!profile) continue;
+    fmt::print("{:>8} {:>7} {:>7} {:>7} {:>7} {:>7} {:>7}\n", "z_mm", "v", "rho", "max", "p_GPa", "q_GPa", "e_MJkg");
+    for (const kessler::verify::Slab& s : r.profile)
+      if (s.density > 0.0 && std::abs(s.velocity) > 0.01 * r.reference_velocity)
+        fmt::print("{:8.2f} {:7.0f} {:7.4f} {:7.4f} {:7.2f} {:7.2f} {:7.3f}\n", 1e3 * s.z, s.velocity, s.density / rho0,
+                   s.max_density / rho0, 1e-9 * s.pressure, 1e-9 * s.viscous_pressure, 1e-6 * s.energy);
+  }
+  return 0;
+}

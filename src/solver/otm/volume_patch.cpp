@@ -1,0 +1,141 @@
+#include "solver/otm/volume_patch.hpp"
+
+#include "core/reduce.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace kessler::otm {
+
+double christensenLimiter(double mean_ratio, double min_ratio) {
+  return std::clamp(std::min(mean_ratio, 2.0 * min_ratio), 0.0, 1.0);
+}
+
+double stabilisationPressure(const PointStore& points, LocalIndex p, double alpha) {
+  const double c = points.sound_speed[p];
+  const double pressure = -alpha * points.density(p) * c * c * points.volume_defect[p];
+  // Failed material bears compression only (docs/theory.md §8): its stabilisation too.
+  return points.eroded[p] ? std::max(pressure, 0.0) : pressure;
+}
+
+double VolumePatch::apply(const Connectivity& conn, LocalIndex owned_nodes, bool averaging, double alpha,
+                          PointStore& points, std::vector<double>& j) {
+  work_.assign(static_cast<std::size_t>(points.owned), 0.0);
+  defect_step_.assign(static_cast<std::size_t>(points.owned), 0.0);
+  node_.resize(static_cast<std::size_t>(owned_nodes));
+  record_.resize(static_cast<std::size_t>(points.owned));
+#pragma omp parallel
+  {
+    // The weights packed per point first, so that the gather reads one record per entry.
+#pragma omp for schedule(static)
+    for (LocalIndex p = 0; p < points.owned; ++p) {
+      const double m = points.mass[p];
+      // Debris has no volume change of its own (and `j` holds nothing for it).
+      record_[p] = points.debris(p) ? std::array<double, 3>{0.0, 0.0, 0.0}
+                                    : std::array<double, 3>{m, m * std::log(j[p]), m * (points.dF[p].trace() - 3.0)};
+    }
+#pragma omp for schedule(static)
+    for (LocalIndex a = 0; a < owned_nodes; ++a) {
+      double m = 0.0, log_j = 0.0, trace = 0.0;
+      for (Index k = conn.node_offset[a]; k < conn.node_offset[a + 1]; ++k) {
+        const Connectivity::NodeSlot slot = conn.node_slot[k];
+        const double N = conn.N[slot.entry];
+        const std::array<double, 3>& w = record_[slot.point];
+        m += N * w[0];
+        log_j += N * w[1];
+        trace += N * w[2];
+      }
+      node_[a] = m > 0.0 ? std::array<double, 2>{log_j / m, trace / m} : std::array<double, 2>{0.0, 0.0};
+    }
+  }
+#pragma omp parallel for schedule(static)
+  for (LocalIndex p = 0; p < points.owned; ++p) {
+    points.viscosity_limiter[p] = 0.0;
+    if (points.debris(p)) continue;
+    // Compression of the point and of the nodal means around it, as logarithmic volume changes: a
+    // linear velocity field (uniform or linearly varying compression) gives ratios near 1 and no
+    // viscosity; a shock, where the point compresses far more than the patch beside it, small ones.
+    const double own = std::log(j[p]);
+    double weight = 0.0, average = 0.0, average_trace = 0.0, mean_ratio = 0.0;
+    double min_ratio = std::numeric_limits<double>::infinity();
+    for (Index e = conn.offset[p]; e < conn.offset[p + 1]; ++e) {
+      const double N = conn.N[e];
+      if (N <= 0.0) continue;  // hidden behind a crack (docs/theory.md §8)
+      const double log_j_a = node_[conn.node[e]][0];
+      weight += N;
+      average += N * log_j_a;
+      average_trace += N * node_[conn.node[e]][1];
+      if (own < 0.0) {
+        const double ratio = log_j_a / own;
+        mean_ratio += N * ratio;
+        min_ratio = std::min(min_ratio, ratio);
+      }
+    }
+    if (!(weight > 0.0)) continue;
+    if (own < 0.0) points.viscosity_limiter[p] = christensenLimiter(mean_ratio / weight, min_ratio);
+    average /= weight;
+    average_trace /= weight;
+    if (!averaging) continue;
+    // What the average takes away is kept: the stabilisation pressure resists it (docs/theory.md §4).
+    // The defect grows by the part of the step's volume strain tr(dF - I) that the average leaves
+    // out: exactly what the stabilisation's forces worked on (forcePressure). Its work is booked with
+    // the mean of the pressures before and after the step, -(S_old V_old + S_new V_new)/2 d(defect),
+    // as the leapfrog's kinetic energy sees it; here the first half, closeStep() the second.
+    const double defect_step = points.dF[p].trace() - 3.0 - average_trace;
+    defect_step_[p] = defect_step;
+    if (alpha > 0.0) work_[p] = -0.5 * stabilisationPressure(points, p, alpha) * points.volume[p] * defect_step;
+    points.volume_defect[p] += defect_step;
+    points.dF[p] *= std::exp((average - own) / 3.0);
+    j[p] = points.dF[p].determinant();
+  }
+  return deterministicSum(points.owned, 0.0, [&](LocalIndex p) { return work_[p]; });
+}
+
+double VolumePatch::closeStep(const PointStore& points, double alpha) const {
+  if (!(alpha > 0.0) || defect_step_.size() != static_cast<std::size_t>(points.owned)) return 0.0;
+  return deterministicSum(points.owned, 0.0, [&](LocalIndex p) {
+    if (points.debris(p)) return 0.0;
+    return -0.5 * stabilisationPressure(points, p, alpha) * points.volume[p] * defect_step_[p];
+  });
+}
+
+void VolumePatch::forcePressure(const Connectivity& conn, LocalIndex owned_nodes, const PointStore& points,
+                                double alpha, std::vector<double>& pi) {
+  record_.resize(static_cast<std::size_t>(points.owned));
+  node_.resize(static_cast<std::size_t>(owned_nodes));  // here: the nodal (P - S) V / m
+  pi.resize(static_cast<std::size_t>(points.owned));
+#pragma omp parallel
+  {
+#pragma omp for schedule(static)
+    for (LocalIndex p = 0; p < points.owned; ++p) {
+      if (points.debris(p)) {
+        record_[p] = {0.0, 0.0, 0.0};
+        continue;
+      }
+      const double P = -points.stress[p].trace() / 3.0;
+      pi[p] = alpha > 0.0 ? stabilisationPressure(points, p, alpha) : 0.0;  // S for now
+      record_[p] = {points.mass[p], (P - pi[p]) * points.volume[p], 0.0};
+    }
+#pragma omp for schedule(static)
+    for (LocalIndex a = 0; a < owned_nodes; ++a) {
+      double m = 0.0, g = 0.0;
+      for (Index k = conn.node_offset[a]; k < conn.node_offset[a + 1]; ++k) {
+        const Connectivity::NodeSlot slot = conn.node_slot[k];
+        const double N = conn.N[slot.entry];
+        m += N * record_[slot.point][0];
+        g += N * record_[slot.point][1];
+      }
+      node_[a][0] = m > 0.0 ? g / m : 0.0;
+    }
+#pragma omp for schedule(static)
+    for (LocalIndex p = 0; p < points.owned; ++p) {
+      if (points.debris(p)) continue;
+      double share = 0.0;
+      for (Index e = conn.offset[p]; e < conn.offset[p + 1]; ++e) share += conn.N[e] * node_[conn.node[e]][0];
+      pi[p] += points.density(p) * share;
+    }
+  }
+}
+
+}  // namespace kessler::otm

@@ -1,0 +1,57 @@
+#pragma once
+// The step's volume change seen over each point's nodal patch (docs/theory.md §4, §5). One gather
+// of each point's ln det(dF) to the nodes (mass-weighted, with the assembly's weights) and one
+// interpolation back serve three things:
+//   - the viscosity limiter of every point (PointStore::viscosity_limiter): Christensen's (1990)
+//     monotonic limiter with the nodes of the point's support as its neighbours;
+//   - volume averaging (Settings::volume_averaging): each point's dF is scaled isotropically to the
+//     patch average, which removes the point-wise volume noise of a 3-D shock on irregular points;
+//   - the record of what averaging took away (PointStore::volume_defect), which the stabilisation
+//     pressure pushes back on, so that the averaging has no zero-energy mode.
+#include "particles/connectivity.hpp"
+#include "particles/store.hpp"
+
+#include <array>
+#include <vector>
+
+namespace kessler::otm {
+
+class VolumePatch {
+ public:
+  // `j` holds det(dF) of every owned point that is not debris (its value for debris is ignored); with
+  // `averaging` it is replaced by the patch average, and dF scaled to match. Returns the work the
+  // stabilisation pressure (factor `alpha`) did over the step on what the averaging took away: energy
+  // the stabilisation stores, kept apart from the material's so that it does not heat it.
+  double apply(const Connectivity& conn, LocalIndex owned_nodes, bool averaging, double alpha, PointStore& points,
+               std::vector<double>& j);
+  // The rest of the step's stabilisation work, with the pressure after the material update (the one
+  // the next step's forces carry): apply() books the step's defect at the old pressure's half.
+  double closeStep(const PointStore& points, double alpha) const;
+
+  // The pressure each point's own gradients must carry in the nodal forces (with its deviator) so
+  // that the forces do the work the averaged update books, sum_p P_p V_p d ln(j_p averaged), and
+  // the stabilisation's: pi_q = A^T((P - S) V)_q / V_q + S_q, with A the averaging operator,
+  // P = -tr(sigma)/3 (viscosity included) and S the stabilisation pressure with factor `alpha`
+  // (docs/theory.md §4). Per point in `pi` (unused for debris).
+  void forcePressure(const Connectivity& conn, LocalIndex owned_nodes, const PointStore& points, double alpha,
+                     std::vector<double>& pi);
+
+ private:
+  // Per point, what the gathers read: m_p, m_p ln det(dF), m_p tr(dF - I) (zero for debris); per
+  // node the mass-weighted means of the last two.
+  std::vector<std::array<double, 3>> record_;
+  std::vector<std::array<double, 2>> node_;
+  std::vector<double> work_;         // per point, the stabilisation's work of the step
+  std::vector<double> defect_step_;  // per point, the step's growth of the volume defect
+};
+
+// Christensen's limiter for one point from the ratios r_a = ln j_a / ln j_p of the nodal means to
+// its own volume change over its support (compression only): phi = clamp(min(mean r, 2 min r), 0, 1).
+// `mean_ratio` is the shape-function-weighted mean, `min_ratio` the smallest.
+double christensenLimiter(double mean_ratio, double min_ratio);
+
+// The stabilisation pressure of a point, -alpha rho c^2 volume_defect (Pa): a point whose own volume
+// change has run below its patch average pushes its nodes apart, one above it pulls them together.
+double stabilisationPressure(const PointStore& points, LocalIndex p, double alpha);
+
+}  // namespace kessler::otm
