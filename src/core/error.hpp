@@ -3,6 +3,7 @@
 // says where and why. KESSLER_VERIFY is always on; KESSLER_ASSERT only in debug builds.
 #include <fmt/format.h>
 
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 
@@ -23,6 +24,17 @@ class InputError : public Error {
 class NumericalError : public Error {
  public:
   using Error::Error;
+};
+
+// A numerical failure at one material point, raised where only its local index is known (a
+// material law); the solver adds the point's identity and place.
+class PointError : public NumericalError {
+ public:
+  PointError(std::int64_t point, const std::string& what) : NumericalError(what), point_(point) {}
+  std::int64_t point() const { return point_; }
+
+ private:
+  std::int64_t point_;
 };
 
 [[noreturn]] void failVerify(const char* condition, const char* file, int line, const std::string& message);

@@ -184,6 +184,8 @@ void ImpactMaterial::update(PointStore& points, LocalIndex begin, LocalIndex end
                           p_.viscosity.quadratic,
                           p_.fracture_min_triaxiality,
                           &damage};
+  LocalIndex failed = end;
+  std::string why;
   std::visit(
       [&](const auto& eos, const auto& law) {
         // Dynamic: points in plastic flow (the impact zone, all in one part of the body) cost
@@ -196,10 +198,21 @@ void ImpactMaterial::update(PointStore& points, LocalIndex begin, LocalIndex end
             points.viscous_pressure[p] = 0.0;
             continue;
           }
-          updatePoint(eos, law, k, points, p);
+          // An exception must not leave the parallel loop (it would end the program): the first
+          // failing point, by index, is kept and reported once the loop is done.
+          try {
+            updatePoint(eos, law, k, points, p);
+          } catch (const NumericalError& e) {
+#pragma omp critical(kessler_material_failure)
+            if (p < failed) {
+              failed = p;
+              why = e.what();
+            }
+          }
         }
       },
       p_.eos, p_.yield);
+  if (failed < end) throw PointError(failed, why);
 }
 
 }  // namespace kessler

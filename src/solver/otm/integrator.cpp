@@ -228,8 +228,12 @@ void Integrator::updatePoints() {
 
 void Integrator::updateMaterials(double dt) {
   PointStore& points = model_.points;
-  for (const BodyInfo& body : model_.bodies)
-    model_.materials[body.material]->update(points, body.point_begin, std::min(body.point_end, points.owned), dt);
+  try {
+    for (const BodyInfo& body : model_.bodies)
+      model_.materials[body.material]->update(points, body.point_begin, std::min(body.point_end, points.owned), dt);
+  } catch (const PointError& e) {
+    failAtPoint(static_cast<LocalIndex>(e.point()), e.what());
+  }
   LocalIndex bad = points.owned;
 #pragma omp parallel for schedule(static) reduction(min : bad)
   for (LocalIndex p = 0; p < points.owned; ++p)
