@@ -58,7 +58,6 @@ struct NohResult {
 NohResult runNoh3d(double mesh_size);
 Outcome noh3d();
 
-// mesh_size: the Gmsh target edge length, m.
 // mesh_size: the Gmsh target edge length, m; settings: the solver's (end_time is set here);
 // one_body: one slab whose halves meet at the impact speed (no contact between bodies) instead of a
 // flyer striking a target.
