@@ -9,9 +9,7 @@ namespace kessler::io {
 
 namespace {
 
-nlohmann::json vec(const Vec3& v) {
-  return nlohmann::json::array({v[0], v[1], v[2]});
-}
+nlohmann::json vec(const Vec3& v) { return nlohmann::json::array({v[0], v[1], v[2]}); }
 
 nlohmann::json energiesJson(const otm::Energies& e) {
   return {{"kinetic_J", e.kinetic},

@@ -19,9 +19,10 @@ namespace kessler::otm {
 class VolumePatch {
  public:
   // `j` holds det(dF) of every owned point that is not debris (its value for debris is ignored); with
-  // `averaging` it is replaced by the patch average, and dF scaled to match. Returns the work the
-  // stabilisation pressure (factor `alpha`) did over the step on what the averaging took away: energy
-  // the stabilisation stores, kept apart from the material's so that it does not heat it.
+  // `averaging` it is replaced by the patch average, and dF scaled to match. Returns the first half of
+  // the work the stabilisation pressure (factor `alpha`) did over the step on what the averaging took
+  // away, at the pressure before the step (closeStep() adds the second): energy the stabilisation
+  // stores, kept apart from the material's so that it does not heat it.
   double apply(const Connectivity& conn, LocalIndex owned_nodes, bool averaging, double alpha, PointStore& points,
                std::vector<double>& j);
   // The rest of the step's stabilisation work, with the pressure after the material update (the one
@@ -51,7 +52,8 @@ class VolumePatch {
 double christensenLimiter(double mean_ratio, double min_ratio);
 
 // The stabilisation pressure of a point, -alpha rho c^2 volume_defect (Pa): a point whose own volume
-// change has run below its patch average pushes its nodes apart, one above it pulls them together.
+// change has run below its patch average pushes its nodes apart, one above it pulls them together
+// (a failed point only pushes: it bears compression only).
 double stabilisationPressure(const PointStore& points, LocalIndex p, double alpha);
 
 }  // namespace kessler::otm
