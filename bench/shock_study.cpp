@@ -41,7 +41,7 @@ int main(int argc, char** argv) {
     const double mesh = std::atof(argv[i]);
     kessler::verify::NohResult r;
     try {
-      r = kessler::verify::runNoh3d(mesh);
+      r = kessler::verify::runNoh3d(mesh, settings);
     } catch (const kessler::NumericalError& e) {
       fmt::print("Noh, mesh {}: stopped: {}\n", mesh, e.what());
       continue;

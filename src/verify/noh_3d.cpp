@@ -25,7 +25,7 @@ constexpr double gamma_gas = 5.0 / 3.0, end_time = 0.6;
 
 }  // namespace
 
-NohResult runNoh3d(double mesh_size) {
+NohResult runNoh3d(double mesh_size, otm::Settings settings) {
   otm::BodySetup ball;
   ball.name = "gas";
   ball.material = std::make_shared<ImpactMaterial>("ideal-gas-5/3", library::find("ideal-gas-5/3").parameters);
@@ -43,7 +43,6 @@ NohResult runNoh3d(double mesh_size) {
   NohResult r;
   for (LocalIndex p = 0; p < model.points.size(); ++p) r.initial_energy += 0.5 * model.points.mass[p];
 
-  otm::Settings settings;
   settings.end_time = end_time;
   otm::Integrator integrator(model, settings);
   integrator.initialise();
