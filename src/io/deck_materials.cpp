@@ -42,7 +42,7 @@ constexpr std::string_view neo_hookean_keys[] = {"model", "density", "youngs_mod
                                                  "fracture_energy"};
 // Keys that only an impact material has: any of them makes a material without `model` an impact one.
 constexpr std::string_view impact_only_keys[] = {"library", "shear_modulus",  "eos",      "strength", "failure",
-                                                 "thermal", "tension_cutoff", "viscosity"};
+                                                 "thermal", "tension_cutoff", "spall_strength", "viscosity"};
 
 // The parameter structs' check() knows what is physical but not where the value was written: report
 // its complaint at the block it came from. `action` must not itself read the deck.
@@ -278,6 +278,16 @@ double parseTensionCutoff(const MapField& material, double base) {
   return floor;
 }
 
+// The tension at which intact material spalls ("1.4 GPa"); `none` or 0: never.
+double parseSpallStrength(const MapField& material, double base) {
+  std::optional<Field> field = material.find("spall_strength");
+  if (!field) return base;
+  if (field->node().IsScalar() && field->node().Scalar() == "none") return 0.0;
+  const double strength = field->quantity(units::pressure);
+  if (strength < 0.0) field->fail("must not be negative: it is a tension given as a positive pressure, such as '1.4 GPa'");
+  return strength;
+}
+
 // Eigenerosion's critical energy-release rate G_c ("100 kJ/m^2"); 0 switches eigenerosion off.
 double parseFractureEnergy(const MapField& material, double base) {
   std::optional<Field> field = material.find("fracture_energy");
@@ -321,6 +331,7 @@ MaterialConfig parseImpact(const std::string& name, const Field& field, const fs
   const ViscosityParameters default_viscosity;
   p.viscosity = parseBlock(map, "viscosity", keys::viscosity, base ? &base->viscosity : &default_viscosity, false);
   p.pressure_floor = parseTensionCutoff(map, base ? base->pressure_floor : p.pressure_floor);
+  p.spall_strength = parseSpallStrength(map, base ? base->spall_strength : 0.0);
   p.fracture_energy = parseFractureEnergy(map, base ? base->fracture_energy : 0.0);
   p.fracture_min_triaxiality =
       parseFractureTriaxiality(map, base ? base->fracture_min_triaxiality : p.fracture_min_triaxiality);

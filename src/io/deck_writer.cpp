@@ -105,6 +105,7 @@ void impactMaterial(YAML::Emitter& out, const MaterialConfig& material) {
   block(out, "thermal", nullptr, p.thermal, keys::thermal);
   // No tension cut-off is the default, and infinity has no deck spelling.
   if (std::isfinite(p.pressure_floor)) scalar(out, "tension_cutoff", p.pressure_floor, "Pa");
+  scalar(out, "spall_strength", p.spall_strength, "Pa; 0: no spall");
   block(out, "viscosity", nullptr, p.viscosity, keys::viscosity);
   scalar(out, "fracture_energy", p.fracture_energy, "J/m^2; 0: no eigenerosion");
   // All plastic work is the default, and -infinity has no deck spelling.

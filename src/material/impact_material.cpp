@@ -15,6 +15,8 @@ ImpactMaterial::ImpactMaterial(std::string name, ImpactMaterialParameters parame
     throw InputError(fmt::format("shear_modulus must not be negative (got {})", p_.shear_modulus));
   p_.thermal.check();
   p_.viscosity.check();
+  if (!(p_.spall_strength >= 0.0) || std::isinf(p_.spall_strength))
+    throw InputError(fmt::format("spall_strength must be a finite tension of at least 0 (got {})", p_.spall_strength));
   if (std::isnan(p_.fracture_min_triaxiality) || p_.fracture_min_triaxiality == std::numeric_limits<double>::infinity())
     throw InputError(
         fmt::format("fracture_min_triaxiality must be a finite number or none (got {})", p_.fracture_min_triaxiality));
@@ -45,7 +47,7 @@ namespace {
 
 // Everything one point needs besides its own state: resolved once per range.
 struct UpdateConstants {
-  double dt, shear_modulus, cv, beta, floor, c_linear, c_quadratic, min_triaxiality;
+  double dt, shear_modulus, cv, beta, floor, spall, c_linear, c_quadratic, min_triaxiality;
   const std::optional<strength::JohnsonCookDamage>* damage;
 };
 
@@ -162,8 +164,10 @@ void updatePoint(const Eos& eos, const Law& law, const UpdateConstants& k, Point
   // dt = h / (Q + sqrt(Q^2 + c^2)), Q = C_l c + C_q h |div v| (limited as q) when compressing.
   const double Q = div_v < 0.0 ? linear * c + quadratic * h * std::abs(div_v) : 0.0;
   points.sound_speed[p] = Q + std::sqrt(Q * Q + c * c);
-  if (damage >= 1.0 && !failed) {
-    points.fail(p);  // fractured: from now on compression only
+  // Fractured by ductile damage or by spall (the equation of state's tension reaching the spall
+  // strength): from now on compression only.
+  if (!failed && (damage >= 1.0 || (k.spall > 0.0 && state.pressure <= -k.spall))) {
+    points.fail(p);
     points.stress[p] = -(std::max(pressure, 0.0) + q) * Mat3::Identity();
     return;
   }
@@ -180,6 +184,7 @@ void ImpactMaterial::update(PointStore& points, LocalIndex begin, LocalIndex end
                           p_.thermal.specific_heat,
                           p_.thermal.taylor_quinney,
                           p_.pressure_floor,
+                          p_.spall_strength,
                           p_.viscosity.linear,
                           p_.viscosity.quadratic,
                           p_.fracture_min_triaxiality,

@@ -40,6 +40,9 @@ struct ImpactMaterialParameters {
   std::optional<strength::JohnsonCookDamageParameters> damage;
   ThermalParameters thermal;
   double pressure_floor = -std::numeric_limits<double>::infinity();  // tension cut-off, Pa
+  // Spall: an intact point fails (PointStore::fail) once its pressure falls to -spall_strength, Pa
+  // (0: never), as a hydrocode's minimum-pressure failure (docs/theory.md §8).
+  double spall_strength = 0.0;
   ViscosityParameters viscosity;
   double fracture_energy = 0.0;  // G_c for eigenerosion, J/m^2 (0: no eigenerosion)
   // Plastic work drives eigenerosion only where the stress triaxiality (mean stress / von Mises

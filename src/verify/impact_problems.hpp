@@ -24,6 +24,26 @@ struct FlyerPlateResult {
 FlyerPlateResult runFlyerPlate();
 Outcome flyerPlate();
 
+struct SpallResult {
+  double speed = 0.0;           // impact speed, m/s
+  double cell = 0.0;            // the column's cell, m
+  double plane = 0.0;           // initial height above the impact face where the release fronts meet, m
+  double acoustic_plane = 0.0;  // ... in the acoustic picture (delta), m
+  long failed = 0;              // failed target points at the end
+  long first_failed = 0;        // those of the first spall (failed within a cell's crossing time of the first)
+  double first_time = 0.0;      // when the first failed, s
+  double first_height = 0.0;    // mean initial height of the first spall's points, m
+  double lowest = 0.0, highest = 0.0;  // and their extent, m
+  long flyer_failed = 0;
+  long points = 0, steps = 0;
+};
+
+// The impact speed whose shock pressure equals Al 6061-T6's spall strength (acoustic estimate).
+double spallThresholdSpeed();
+// speed: the flyer's; cell: the column's cell (delta = 2 mm, a whole number of cells).
+SpallResult runSpall(double speed, double cell);
+Outcome spall();
+
 // One slab of the target at the end of hugoniot-3d, mass-weighted (for the shock study).
 struct Slab {
   double z, velocity, density, max_density, pressure, viscous_pressure, energy;  // SI
@@ -54,8 +74,9 @@ struct NohResult {
   std::vector<Shell> profile;  // shells of r_s/40 out to 2 r_s at the end
 };
 
-// mesh_size: the Gmsh target edge length of the unit sphere.
-NohResult runNoh3d(double mesh_size);
+// mesh_size: the Gmsh target edge length of the unit sphere; settings: the solver's (end_time is set
+// here).
+NohResult runNoh3d(double mesh_size, otm::Settings settings = {});
 Outcome noh3d();
 
 // mesh_size: the Gmsh target edge length, m; settings: the solver's (end_time is set here);

@@ -26,6 +26,8 @@ const std::vector<Problem>& problems() {
       {"adiabatic-heating", "temperature rise of plastic work in isochoric shear against the closed form",
        adiabaticHeating},
       {"flyer-plate", "symmetric Al 6061-T6 plate impact at 2 km/s against the Hugoniot", flyerPlate},
+      {"spall", "symmetric Al 6061-T6 plate impact, flyer delta on target 2 delta: spall plane above the threshold, none below",
+       spall},
       {"hugoniot-3d", "symmetric Al 6061-T6 plate impact at 6.18 km/s on unstructured points against the Hugoniot",
        hugoniot3d},
       {"noh-3d", "spherical Noh problem (ideal gas): post-shock density at two resolutions", noh3d},

@@ -210,7 +210,8 @@ TEST(DeckMaterials, ChoosesTheModelFromTheKeys) {
             "fracture_energy)");
   EXPECT_EQ(errorOf("  al: { library: Al6061-T6, youngs_modulus: 70 GPa }"),
             "materials.al.youngs_modulus: unknown key (allowed: model, density, library, shear_modulus, eos, "
-            "strength, failure, thermal, tension_cutoff, viscosity, fracture_energy, fracture_min_triaxiality)");
+            "strength, failure, thermal, tension_cutoff, spall_strength, viscosity, fracture_energy, "
+            "fracture_min_triaxiality)");
 }
 
 TEST(DeckMaterials, FractureEnergyHasUnitsAndDefaultsToTheLibrary) {
@@ -241,6 +242,14 @@ TEST(DeckMaterials, TensionCutoffNoneRemovesTheFloor) {
   EXPECT_EQ(material("  al: { library: Al6061-T6, tension_cutoff: none }").impact.pressure_floor,
             -std::numeric_limits<double>::infinity());
   EXPECT_EQ(material("  al: { library: Al6061-T6, tension_cutoff: 0 }").impact.pressure_floor, 0.0);
+}
+
+TEST(DeckMaterials, SpallStrengthFromTheLibraryOrTheDeck) {
+  EXPECT_EQ(material("  al: { library: Al6061-T6 }").impact.spall_strength, 1.4e9);
+  EXPECT_EQ(material("  al: { library: Al6061-T6, spall_strength: 2 GPa }").impact.spall_strength, 2e9);
+  EXPECT_EQ(material("  al: { library: Al6061-T6, spall_strength: none }").impact.spall_strength, 0.0);
+  EXPECT_TRUE(errorOf("  al: { library: Al6061-T6, spall_strength: -1 GPa }")
+                  .starts_with("materials.al.spall_strength: "));
 }
 
 TEST(DeckMaterials, CommandLineSettingsOverrideLibraryKeys) {

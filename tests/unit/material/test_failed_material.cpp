@@ -2,7 +2,8 @@
 // point has failed it has no deviator and bears the pressure of its equation of state while it is
 // denser than its reference, none once it has expanded; its internal energy takes the p dV work
 // of that pressure. A point whose Johnson-Cook damage reaches 1 fails (stays in its body, bearing
-// compression) instead of leaving it. Checked against the EOS evaluated independently.
+// compression) instead of leaving it, and so does one whose pressure falls to minus its spall
+// strength. Checked against the EOS evaluated independently.
 #include "material/impact_material.hpp"
 #include "material/library.hpp"
 
@@ -25,9 +26,9 @@ ImpactMaterialParameters aluminium() {
 }
 
 struct OnePoint {
-  ImpactMaterial material{"al", aluminium()};
+  ImpactMaterial material;
   PointStore points;
-  OnePoint() {
+  explicit OnePoint(ImpactMaterialParameters parameters = aluminium()) : material("al", std::move(parameters)) {
     points.resize(1);
     points.body[0] = 0;
     points.mass[0] = material.referenceDensity() * volume0;
@@ -128,6 +129,44 @@ TEST(FailedMaterial, DamageFailsThePointInsteadOfReleasingIt) {
   const double pressure = -point.points.stress[0].trace() / 3.0;
   EXPECT_GT(pressure, 0.0);
   EXPECT_LT((point.points.stress[0] + pressure * Mat3::Identity()).norm(), 1e-12 * pressure);
+}
+
+// Uniaxial stretch in small steps: the point stays intact while its EOS pressure is above minus the
+// spall strength and fails in the step where it reaches it; from then on it bears no tension.
+TEST(FailedMaterial, SpallFailsThePointAtItsSpallStrength) {
+  ImpactMaterialParameters p = aluminium();
+  p.damage.reset();  // as a deck has it: JC damage would fail the stretched point first
+  OnePoint point(p);
+  const double spall = point.material.parameters().spall_strength;
+  ASSERT_GT(spall, 1e9);  // the library's 1.4 GPa
+  Mat3 dF = Mat3::Identity();
+  dF(2, 2) = 1.0005;  // about 37 MPa of tension a step
+  int steps = 0;
+  double last_intact = 0.0;
+  while (!point.points.failed(0) && steps < 200) {
+    point.step(dF);
+    ++steps;
+    if (!point.points.failed(0)) last_intact = point.eosPressure();
+  }
+  ASSERT_TRUE(point.points.failed(0)) << "no spall after " << steps << " steps";
+  EXPECT_GT(last_intact, -spall);
+  EXPECT_LE(point.eosPressure(), -spall);
+  EXPECT_GT(point.eosPressure(), -spall - 0.1e9) << "failed in the step that crossed, not later";
+  EXPECT_TRUE(point.points.stress[0].isZero(0.0)) << point.points.stress[0];
+  point.step(dF);
+  EXPECT_TRUE(point.points.stress[0].isZero(0.0)) << "a spalled point bears no tension";
+}
+
+TEST(FailedMaterial, NoSpallStrengthNoSpall) {
+  ImpactMaterialParameters p = aluminium();
+  p.damage.reset();
+  p.spall_strength = 0.0;
+  OnePoint point(p);
+  Mat3 dF = Mat3::Identity();
+  dF(2, 2) = 1.0005;
+  for (int k = 0; k < 100; ++k) point.step(dF);
+  EXPECT_LT(point.eosPressure(), -2e9);
+  EXPECT_FALSE(point.points.failed(0));
 }
 
 }  // namespace
