@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 
 namespace kessler::analysis {
 namespace {
@@ -184,10 +185,40 @@ RearWallDamage measureRearWall(const otm::Model& model, const FragmentSet& fragm
     damage.perforation_diameters.push_back(fitEllipse(grid, region).equivalent_diameter);
   }
   std::sort(damage.perforation_diameters.begin(), damage.perforation_diameters.end(), std::greater<>());
+
+  // Bulge: the attached material's furthest reach behind the original rear face (its points start
+  // a fraction of a spacing inside the face).
+  for (LocalIndex p = body.point_begin; p < body.point_end; ++p)
+    if (attached(p)) damage.bulge = std::max(damage.bulge, plate.normal.dot(model.points.x[p]) - plate.rear_face);
+  // Incipient spall: failed wall points (still in the wall) nearer the rear than the front of the
+  // attached wall in their column (one raster cell), so that a crater in the front face of a bulged
+  // wall does not count.
+  const double infinity = std::numeric_limits<double>::infinity();
+  std::vector<double> front(static_cast<std::size_t>(grid.nx()) * grid.ny(), infinity), rear(front.size(), -infinity);
+  for (LocalIndex p = body.point_begin; p < body.point_end; ++p) {
+    if (!attached(p)) continue;
+    const int k = grid.cellOf(frame.project(model.points.x[p]));
+    if (k < 0) continue;
+    const double s = plate.normal.dot(model.points.x[p]);
+    front[k] = std::min(front[k], s);
+    rear[k] = std::max(rear[k], s);
+  }
+  for (LocalIndex p = body.point_begin; p < body.point_end; ++p) {
+    if (!model.points.failed(p)) continue;
+    const int k = grid.cellOf(frame.project(model.points.x[p]));
+    if (k < 0 || !(rear[k] > front[k])) continue;
+    if (plate.normal.dot(model.points.x[p]) > 0.5 * (front[k] + rear[k]))
+      damage.incipient_mass += model.points.mass[p] * mirror.images();
+  }
+
   if (damage.perforations > 0)
     damage.classification = "perforation";
   else if (damage.spall_fragments > 0)
-    damage.classification = "spall";
+    damage.classification = "detached_spall";
+  else if (damage.incipient_mass > 0.0)
+    damage.classification = "incipient_spall";
+  else if (damage.bulge > grid.cell())
+    damage.classification = "bulge";
   return damage;
 }
 

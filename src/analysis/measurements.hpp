@@ -116,12 +116,19 @@ struct RearWallDamage {
   double spall_mass = 0.0;                    // kg
   double eroded_mass_behind = 0.0;            // kg of eroded wall points behind the rear face
   double debris_carried = 0.0;                // kg of debris the wall has caught and still carries
-  std::string classification = "none";        // none | spall | perforation
+  double bulge = 0.0;         // m, how far the wall's attached material reaches behind its original rear face
+  double incipient_mass = 0.0;  // kg of failed wall material in the rear half of the wall, still attached
+  // The NASA damage classes (docs/analysis.md §7), worst first: perforation | detached_spall |
+  // incipient_spall | bulge | none. The first two are failures.
+  std::string classification = "none";
+  bool failed() const { return classification == "perforation" || classification == "detached_spall"; }
 };
 
 // The last plate: perforations are the bounded empty regions (at least 4 cells) of the
-// projection of the wall's largest fragment at any depth; spall is every other wall fragment
-// whose centre lies behind the original rear face.
+// projection of the wall's largest fragment at any depth; detached spall is every other wall
+// fragment whose centre lies behind the original rear face; incipient spall is failed wall
+// material still in the wall, nearer its rear face than its front face where it lies; a bulge is
+// the wall reaching more than one spacing behind its original rear face.
 RearWallDamage measureRearWall(const otm::Model& model, const FragmentSet& fragments, const ImpactGeometry& geometry);
 
 }  // namespace kessler::analysis

@@ -153,7 +153,10 @@ nlohmann::json toJson(const Report& r) {
                         {"spall_mass_kg", w.spall_mass},
                         {"eroded_mass_behind_kg", w.eroded_mass_behind},
                         {"debris_carried_kg", w.debris_carried},
-                        {"classification", w.classification}};
+                        {"bulge_m", w.bulge},
+                        {"incipient_spall_mass_kg", w.incipient_mass},
+                        {"classification", w.classification},
+                        {"failed", w.failed()}};
   }
   if (r.shield) out["ballistic_limit"] = shieldJson(*r.shield);
   return out;

@@ -57,9 +57,10 @@ std::string formatReport(const Report& r) {
   }
   if (r.rear_wall) {
     const RearWallDamage& w = *r.rear_wall;
-    line(out, fmt::format("  rear wall {:<10} {}: {} perforation(s), {} detached spall fragment(s) ({:.3f} g); "
-                          "carries {:.3f} g of debris",
-                          r.body_names[w.body], w.classification, w.perforations, w.spall_fragments, w.spall_mass * 1e3,
+    line(out, fmt::format("  rear wall {:<10} {} ({}): {} perforation(s), {} detached spall fragment(s) ({:.3f} g), "
+                          "{:.3f} g failed inside, bulge {:.2f} mm; carries {:.3f} g of debris",
+                          r.body_names[w.body], w.classification, w.failed() ? "failed" : "holds", w.perforations,
+                          w.spall_fragments, w.spall_mass * 1e3, w.incipient_mass * 1e3, w.bulge * 1e3,
                           w.debris_carried * 1e3));
   }
   if (r.shield) {

@@ -117,7 +117,35 @@ TEST(Hole, BulgeLeavesTheSlabButIsNotThrough) {
   EXPECT_DOUBLE_EQ(hole.through_area, 0.0);
   const RearWallDamage wall = measureRearWall(m.model, findFragments(m.model, {}, {}), m.geometry);
   EXPECT_EQ(wall.perforations, 0);
-  EXPECT_EQ(wall.classification, "none");
+  EXPECT_EQ(wall.classification, "bulge");
+  EXPECT_FALSE(wall.failed());
+  // The rear face's points start a fraction of a spacing inside it.
+  EXPECT_NEAR(wall.bulge, 3 * mm, measureHole(m.model, m.geometry, 0).cell);
+}
+
+TEST(RearWall, FailedMaterialNearTheRearFaceIsIncipientSpallNearTheFrontACrater) {
+  // The shot goes down: the 2 mm plate's rear face is z = -2 mm. Failed points (still in the wall)
+  // in a 3 mm disc, first in the rear half, then, in another plate bulged 3 mm, in the front half.
+  PlateModel rear = plateModel();
+  for (LocalIndex p = 0; p < rear.model.points.size(); ++p)
+    if (rear.model.points.x[p].head<2>().norm() < 3 * mm && rear.model.points.x[p][2] < -1.5 * mm)
+      rear.model.points.fail(p);
+  const RearWallDamage spall = measureRearWall(rear.model, findFragments(rear.model, {}, {}), rear.geometry);
+  EXPECT_EQ(spall.classification, "incipient_spall");
+  EXPECT_FALSE(spall.failed());
+  EXPECT_GT(spall.incipient_mass, 0.0);
+
+  PlateModel front = plateModel();
+  for (LocalIndex p = 0; p < front.model.points.size(); ++p) {
+    Vec3& x = front.model.points.x[p];
+    const bool crater = x.head<2>().norm() < 3 * mm && x[2] > -0.5 * mm;
+    const double r2 = x.head<2>().squaredNorm() / (6 * mm * 6 * mm);
+    if (r2 < 1.0) x[2] -= 3 * mm * (1.0 - r2);
+    if (crater) front.model.points.fail(p);
+  }
+  const RearWallDamage crater = measureRearWall(front.model, findFragments(front.model, {}, {}), front.geometry);
+  EXPECT_EQ(crater.incipient_mass, 0.0) << "a crater in the front face of a bulged wall is not spall";
+  EXPECT_EQ(crater.classification, "bulge");
 }
 
 TEST(Hole, RefusesAnInconsistentGeometry) {
@@ -275,7 +303,8 @@ TEST(RearWall, PerforationSpallAndNone) {
     geometry.shot_direction = down;
     geometry.plates = {plateFromBox(body, wall, down)};
     const RearWallDamage d = measureRearWall(model, findFragments(model, {}, {}), geometry);
-    EXPECT_EQ(d.classification, "spall");
+    EXPECT_EQ(d.classification, "detached_spall");
+    EXPECT_TRUE(d.failed());
     EXPECT_EQ(d.perforations, 0);
     EXPECT_EQ(d.spall_fragments, 1);
     EXPECT_NEAR(d.spall_mass, 2700.0 * 2 * 2 * 1 * 1e-9, 1e-15);
