@@ -16,6 +16,7 @@ void addCommands(CLI::App& app) {
   addVerifyCommand(app);
   addEosTableCommand(app);
   addBenchCommand(app);
+  addLimitCommand(app);
 }
 
 }  // namespace kessler::app

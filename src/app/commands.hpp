@@ -9,6 +9,7 @@ void addCommands(CLI::App& app);
 void addVerifyCommand(CLI::App& app);
 void addRunCommands(CLI::App& app);  // run and check
 void addBenchCommand(CLI::App& app);
+void addLimitCommand(CLI::App& app);  // the simulated ballistic limit
 
 void setExitCode(int code);
 int exitCode();

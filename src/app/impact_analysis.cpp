@@ -92,7 +92,7 @@ nlohmann::json analyseImpact(const io::RunConfig& config, const otm::Model& mode
   }
 }
 
-void drawPlots(const fs::path& dir) {
+void drawPlots(const fs::path& dir, std::initializer_list<const char*> scripts_to_run) {
   const fs::path scripts = plotsDir();
   std::error_code error;
   if (!fs::exists(system_python, error)) {
@@ -109,7 +109,7 @@ void drawPlots(const fs::path& dir) {
   fs::create_directories(dir / "plots", error);
   const fs::path log_file = dir / "plots" / "plots.log";
   std::vector<std::string> scripts_run;
-  for (const char* script : {"debris_cloud.py", "fragments.py"}) {
+  for (const char* script : scripts_to_run) {
     const fs::path path = scripts / script;
     if (!fs::exists(path, error)) {
       warn(fmt::format("no {} picture: {} not found (set KESSLER_PLOTS_DIR to the tools/plots folder)", script,

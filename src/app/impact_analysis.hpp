@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <initializer_list>
 
 namespace kessler::app {
 
@@ -18,9 +19,11 @@ namespace kessler::app {
 nlohmann::json analyseImpact(const io::RunConfig& config, const otm::Model& model, const std::filesystem::path& dir,
                              const std::string& state);
 
-// Runs tools/plots/debris_cloud.py and fragments.py on `dir` with /usr/bin/python3 (output in
-// dir/plots/, log in dir/plots/plots.log). Missing Python or matplotlib, or a failing script, is a
-// warning. The scripts are looked for in $KESSLER_PLOTS_DIR, else the source tree's tools/plots.
-void drawPlots(const std::filesystem::path& dir);
+// Runs tools/plots scripts (by default debris_cloud.py and fragments.py) on `dir` with
+// /usr/bin/python3 (output in dir/plots/, log in dir/plots/plots.log). Missing Python or
+// matplotlib, or a failing script, is a warning. The scripts are looked for in $KESSLER_PLOTS_DIR,
+// else the source tree's tools/plots.
+void drawPlots(const std::filesystem::path& dir,
+               std::initializer_list<const char*> scripts = {"debris_cloud.py", "fragments.py"});
 
 }  // namespace kessler::app
