@@ -116,7 +116,7 @@ struct RearWallDamage {
   double spall_mass = 0.0;                    // kg
   double eroded_mass_behind = 0.0;            // kg of eroded wall points behind the rear face
   double debris_carried = 0.0;                // kg of debris the wall has caught and still carries
-  double bulge = 0.0;         // m, how far the wall's attached material reaches behind its original rear face
+  double bulge = 0.0;           // m, how far the wall's attached material reaches behind its original rear face
   double incipient_mass = 0.0;  // kg of failed wall material in the rear half of the wall, still attached
   // The NASA damage classes (docs/analysis.md §7), worst first: perforation | detached_spall |
   // incipient_spall | bulge | none. The first two are failures.

@@ -31,7 +31,7 @@ namespace {
 struct LimitArguments {
   std::string deck;
   std::string out = "limit";
-  std::vector<double> speeds;  // km/s
+  std::vector<double> speeds;                 // km/s
   double min = 1.0, max = 10.0, step = 0.25;  // mm
   int threads = 0;
   std::vector<std::string> sets;
@@ -56,16 +56,17 @@ struct Projectile {
 
 Projectile projectileOf(const io::RunConfig& config, const std::string& deck) {
   if (!config.analysis.enabled || config.analysis.projectiles.empty() || config.analysis.plates.empty())
-    throw InputError(fmt::format("{}: kessler limit needs the impact analysis, with a projectile and a rear wall "
-                                 "(docs/analysis.md)",
-                                 deck));
+    throw InputError(
+        fmt::format("{}: kessler limit needs the impact analysis, with a projectile and a rear wall "
+                    "(docs/analysis.md)",
+                    deck));
   Projectile p;
   p.body = config.analysis.projectiles.front();
   const io::BodyConfig& body = config.bodies[static_cast<std::size_t>(p.body)];
   const auto* sphere = std::get_if<geometry::Sphere>(&body.mesh.shape);
   if (!sphere)
-    throw InputError(fmt::format("{}: kessler limit scales a spherical projectile; '{}' is not a sphere", deck,
-                                 body.name));
+    throw InputError(
+        fmt::format("{}: kessler limit scales a spherical projectile; '{}' is not a sphere", deck, body.name));
   if (!(body.velocity.norm() > 0.0))
     throw InputError(fmt::format("{}: the projectile '{}' does not move", deck, body.name));
   p.sphere = *sphere;
@@ -123,8 +124,8 @@ Trial runTrial(const io::RunConfig& base, const Projectile& projectile, double s
 void runLimit(const LimitArguments& args) {
   if (args.speeds.empty()) throw InputError("kessler limit: give at least one speed (--speeds, km/s)");
   if (!(args.step > 0.0 && args.min > 0.0 && args.max > args.min))
-    throw InputError(fmt::format("kessler limit: need 0 < --min < --max and --step > 0 (got {}, {}, {} mm)",
-                                 args.min, args.max, args.step));
+    throw InputError(fmt::format("kessler limit: need 0 < --min < --max and --step > 0 (got {}, {}, {} mm)", args.min,
+                                 args.max, args.step));
   const io::RunConfig base = io::parseDeck(args.deck, args.sets);
   const Projectile projectile = projectileOf(base, args.deck);
   const fs::path out = args.out;
@@ -176,8 +177,9 @@ void runLimit(const LimitArguments& args) {
     limits << fmt::format("{},{},{},{},{},{},{}\n", speed, critical, held, failed, runs, christiansen, note);
     limits.flush();
     if (critical > 0.0)
-      fmt::print("  {:.2f} km/s: critical diameter {:.2f} mm (holds at {:.2f}, fails at {:.2f}); Christiansen {:.2f} mm\n",
-                 kms, critical / mm, held / mm, failed / mm, christiansen / mm);
+      fmt::print(
+          "  {:.2f} km/s: critical diameter {:.2f} mm (holds at {:.2f}, fails at {:.2f}); Christiansen {:.2f} mm\n",
+          kms, critical / mm, held / mm, failed / mm, christiansen / mm);
     else
       fmt::print("  {:.2f} km/s: {} ({:.2f} mm); Christiansen {:.2f} mm\n", kms, note,
                  (held > 0.0 ? held : failed) / mm, christiansen / mm);

@@ -41,8 +41,9 @@ static_assert(std::is_same_v<std::variant_alternative_t<0, strength::Yield>, str
 constexpr std::string_view neo_hookean_keys[] = {"model", "density", "youngs_modulus", "poisson_ratio",
                                                  "fracture_energy"};
 // Keys that only an impact material has: any of them makes a material without `model` an impact one.
-constexpr std::string_view impact_only_keys[] = {"library", "shear_modulus",  "eos",      "strength", "failure",
-                                                 "thermal", "tension_cutoff", "spall_strength", "viscosity"};
+constexpr std::string_view impact_only_keys[] = {"library",        "shear_modulus",  "eos",
+                                                 "strength",       "failure",        "thermal",
+                                                 "tension_cutoff", "spall_strength", "viscosity"};
 
 // The parameter structs' check() knows what is physical but not where the value was written: report
 // its complaint at the block it came from. `action` must not itself read the deck.
@@ -284,7 +285,8 @@ double parseSpallStrength(const MapField& material, double base) {
   if (!field) return base;
   if (field->node().IsScalar() && field->node().Scalar() == "none") return 0.0;
   const double strength = field->quantity(units::pressure);
-  if (strength < 0.0) field->fail("must not be negative: it is a tension given as a positive pressure, such as '1.4 GPa'");
+  if (strength < 0.0)
+    field->fail("must not be negative: it is a tension given as a positive pressure, such as '1.4 GPa'");
   return strength;
 }
 

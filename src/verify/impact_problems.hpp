@@ -25,14 +25,14 @@ FlyerPlateResult runFlyerPlate();
 Outcome flyerPlate();
 
 struct SpallResult {
-  double speed = 0.0;           // impact speed, m/s
-  double cell = 0.0;            // the column's cell, m
-  double plane = 0.0;           // initial height above the impact face where the release fronts meet, m
-  double acoustic_plane = 0.0;  // ... in the acoustic picture (delta), m
-  long failed = 0;              // failed target points at the end
-  long first_failed = 0;        // those of the first spall (failed within a cell's crossing time of the first)
-  double first_time = 0.0;      // when the first failed, s
-  double first_height = 0.0;    // mean initial height of the first spall's points, m
+  double speed = 0.0;                  // impact speed, m/s
+  double cell = 0.0;                   // the column's cell, m
+  double plane = 0.0;                  // initial height above the impact face where the release fronts meet, m
+  double acoustic_plane = 0.0;         // ... in the acoustic picture (delta), m
+  long failed = 0;                     // failed target points at the end
+  long first_failed = 0;               // those of the first spall (failed within a cell's crossing time of the first)
+  double first_time = 0.0;             // when the first failed, s
+  double first_height = 0.0;           // mean initial height of the first spall's points, m
   double lowest = 0.0, highest = 0.0;  // and their extent, m
   long flyer_failed = 0;
   long points = 0, steps = 0;

@@ -55,8 +55,8 @@ SpallResult runSpall(double speed, double cell) {
   otm::Model model;
   addBoxBody(model, "flyer", {Vec3(0, 0, -delta - 0.05 * cell), Vec3(w, w, -0.05 * cell)}, {2, 2, flyer_cells},
              Vec3(0, 0, speed), material);
-  const int target = addBoxBody(model, "target", {Vec3(0, 0, 0), Vec3(w, w, target_cells * cell)},
-                                {2, 2, target_cells}, Vec3::Zero(), material);
+  const int target = addBoxBody(model, "target", {Vec3(0, 0, 0), Vec3(w, w, target_cells * cell)}, {2, 2, target_cells},
+                                Vec3::Zero(), material);
   for (LocalIndex a = 0; a < model.nodes.size(); ++a) {
     otm::constrainNode(model, a, 0);
     otm::constrainNode(model, a, 1);
@@ -73,7 +73,8 @@ SpallResult runSpall(double speed, double cell) {
   {
     const double up = 0.5 * speed, us = eos.sound_speed + eos.slope * up;
     const double rho1 = eos.density * us / (us - up);
-    const double c2 = std::get<eos::MieGruneisen>(material->parameters().eos).evaluate(rho1, 0.5 * up * up).sound_speed2;
+    const double c2 =
+        std::get<eos::MieGruneisen>(material->parameters().eos).evaluate(rho1, 0.5 * up * up).sound_speed2;
     const double shear = material->parameters().shear_modulus;
     const double release = std::sqrt(c2 + 4.0 * shear / (3.0 * rho1)) * rho1 / eos.density;
     r.plane = 0.5 * delta * (1.0 + release / us);

@@ -248,8 +248,8 @@ TEST(DeckMaterials, SpallStrengthFromTheLibraryOrTheDeck) {
   EXPECT_EQ(material("  al: { library: Al6061-T6 }").impact.spall_strength, 1.4e9);
   EXPECT_EQ(material("  al: { library: Al6061-T6, spall_strength: 2 GPa }").impact.spall_strength, 2e9);
   EXPECT_EQ(material("  al: { library: Al6061-T6, spall_strength: none }").impact.spall_strength, 0.0);
-  EXPECT_TRUE(errorOf("  al: { library: Al6061-T6, spall_strength: -1 GPa }")
-                  .starts_with("materials.al.spall_strength: "));
+  EXPECT_TRUE(
+      errorOf("  al: { library: Al6061-T6, spall_strength: -1 GPa }").starts_with("materials.al.spall_strength: "));
 }
 
 TEST(DeckMaterials, CommandLineSettingsOverrideLibraryKeys) {
