@@ -93,10 +93,7 @@ def main():
     ax.legend(loc="best", fontsize=9)
     title = summary.get("title", os.path.basename(os.path.abspath(run)))
     ax.set_title("\n".join(textwrap.wrap(f"{title}: fragment sizes", 70)), fontsize=10)
-    out = os.path.join(kp.plots_dir(run), "fragments.png")
-    fig.savefig(out, dpi=120)
-    plt.close(fig)
-    print(f"fragments.py: wrote {out}")
+    kp.save_figure(fig, run, "fragments.png")
 
 
 if __name__ == "__main__":

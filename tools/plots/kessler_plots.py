@@ -51,6 +51,15 @@ def plots_dir(run):
     return out
 
 
+def save_figure(fig, run, name):
+    """Writes fig as RUN/plots/NAME at the scripts' resolution, closes it and says where."""
+    import matplotlib.pyplot as plt
+    out = os.path.join(plots_dir(run), name)
+    fig.savefig(out, dpi=120)
+    plt.close(fig)
+    print(f"{os.path.basename(sys.argv[0])}: wrote {out}")
+
+
 def load_summary(run):
     """summary.json as a dict, or {} when absent."""
     path = os.path.join(run, "summary.json")

@@ -68,10 +68,7 @@ def main():
     ax.grid(True, linewidth=0.3, alpha=0.5)
     ax.legend(loc="best", fontsize=9)
     ax.set_title(f"simulated ballistic limit: {os.path.basename(os.path.abspath(out_dir))}", fontsize=10)
-    out = os.path.join(kp.plots_dir(out_dir), "limit.png")
-    fig.savefig(out, dpi=120)
-    plt.close(fig)
-    print(f"limit.py: wrote {out}")
+    kp.save_figure(fig, out_dir, "limit.png")
 
 
 if __name__ == "__main__":
