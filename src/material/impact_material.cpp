@@ -176,6 +176,17 @@ void updatePoint(const Eos& eos, const Law& law, const UpdateConstants& k, Point
 
 }  // namespace
 
+void ImpactMaterial::heat(PointStore& points, LocalIndex begin, LocalIndex end, std::span<const double> heat) const {
+  const double cv = p_.thermal.specific_heat;
+#pragma omp parallel for schedule(static)
+  for (LocalIndex p = begin; p < end; ++p) {
+    const double q = heat[static_cast<std::size_t>(p - begin)];
+    if (q == 0.0 || points.debris(p)) continue;
+    points.energy[p] += q / points.mass[p];
+    points.temperature[p] += q / (points.mass[p] * cv);
+  }
+}
+
 void ImpactMaterial::update(PointStore& points, LocalIndex begin, LocalIndex end, double dt) const {
   std::optional<strength::JohnsonCookDamage> damage;
   if (p_.damage) damage.emplace(*p_.damage);
@@ -193,8 +204,8 @@ void ImpactMaterial::update(PointStore& points, LocalIndex begin, LocalIndex end
   std::string why;
   std::visit(
       [&](const auto& eos, const auto& law) {
-        // Dynamic: points in plastic flow (the impact zone, all in one part of the body) cost
-        // several times more than elastic ones, and each point's update is its own.
+  // Dynamic: points in plastic flow (the impact zone, all in one part of the body) cost
+  // several times more than elastic ones, and each point's update is its own.
 #pragma omp parallel for schedule(dynamic, 512)
         for (LocalIndex p = begin; p < end; ++p) {
           if (points.debris(p)) {

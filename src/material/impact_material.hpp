@@ -60,6 +60,8 @@ class ImpactMaterial final : public Material {
   double poissonRatio() const override;
   void initialise(PointStore& points, LocalIndex begin, LocalIndex end) const override;
   void update(PointStore& points, LocalIndex begin, LocalIndex end, double dt) const override;
+  // Into the specific internal energy and, through the specific heat, the temperature.
+  void heat(PointStore& points, LocalIndex begin, LocalIndex end, std::span<const double> heat) const override;
   const ImpactMaterialParameters& parameters() const { return p_; }
 
  private:

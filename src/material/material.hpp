@@ -7,6 +7,7 @@
 #include "particles/store.hpp"
 
 #include <memory>
+#include <span>
 #include <string>
 
 namespace kessler {
@@ -26,6 +27,11 @@ class Material {
   virtual void initialise(PointStore& /*points*/, LocalIndex /*begin*/, LocalIndex /*end*/) const {}
   // Updates the points [begin, end) after their F has been advanced by dF over dt.
   virtual void update(PointStore& points, LocalIndex begin, LocalIndex end, double dt) const = 0;
+  // Adds heat[p - begin] joules to each point of [begin, end) before its update: the kinetic energy
+  // the velocity transfer took from the points' fluctuations this step (docs/theory.md §4 step 4).
+  // A law without a thermal state (an elastic solid, whose energy is its stored energy) takes none.
+  virtual void heat(PointStore& /*points*/, LocalIndex /*begin*/, LocalIndex /*end*/,
+                    std::span<const double> /*heat*/) const {}
 };
 
 using MaterialPtr = std::shared_ptr<const Material>;

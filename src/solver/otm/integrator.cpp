@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
 
 namespace kessler::otm {
 
@@ -168,6 +169,7 @@ void Integrator::updatePoints() {
   const Connectivity& conn = model_.connectivity;
   LocalIndex bad = points.owned;
   j_point_.resize(static_cast<std::size_t>(points.owned));  // det(dF) of each point of the bodies
+  transfer_heat_.assign(static_cast<std::size_t>(points.owned), 0.0);
 #pragma omp parallel for schedule(static) reduction(min : bad)
   for (LocalIndex p = 0; p < points.owned; ++p) {
     if (points.debris(p) && points.carrier[p] < 0) {
@@ -178,19 +180,27 @@ void Integrator::updatePoints() {
     }
     Vec3 dx = Vec3::Zero(), dv = Vec3::Zero();
     Mat3 dF = Mat3::Identity();
+    double dv2 = 0.0;  // sum_a N_a |dv_a|^2
     for (Index e = conn.offset[p]; e < conn.offset[p + 1]; ++e) {
       const NodeIncrement& node = increment_[conn.node[e]];
       dx += conn.N[e] * node.du;
       dv += conn.N[e] * node.dv;
+      dv2 += conn.N[e] * node.dv.squaredNorm();
       dF.noalias() += node.du * conn.dN[e].transpose();
     }
+    // The kinetic energy the transfer takes from the point (docs/theory.md §4 step 4): half its mass
+    // times the spread of its nodes' increments, sum_a N_a |dv_a - dv|^2 (never negative: N >= 0,
+    // sum N = 1). It becomes heat, so the step conserves energy as the nodes' leapfrog does.
+    const double heat = 0.5 * points.mass[p] * std::max(dv2 - dv.squaredNorm(), 0.0);
     if (points.debris(p)) {
       // Debris a body has caught: carried by its nodes, with no strain of its own.
       points.x[p] += dx;
       points.v[p] += dv;
       points.dF[p].setIdentity();
+      points.energy[p] += heat / points.mass[p];
       continue;
     }
+    transfer_heat_[p] = heat;
     const double J = dF.determinant();
     if (points.failed(p) && !(J > 0.0)) {
       // Failed material crushed through itself by its nodes is tangled debris: released to fly
@@ -198,6 +208,8 @@ void Integrator::updatePoints() {
       points.carrier[p] = -1;
       points.stress[p].setZero();
       points.viscous_pressure[p] = 0.0;
+      points.energy[p] += heat / points.mass[p];
+      transfer_heat_[p] = 0.0;
       points.x[p] += dt_step_ * points.v[p];
       points.dF[p].setIdentity();
       continue;
@@ -229,8 +241,15 @@ void Integrator::updatePoints() {
 void Integrator::updateMaterials(double dt) {
   PointStore& points = model_.points;
   try {
-    for (const BodyInfo& body : model_.bodies)
-      model_.materials[body.material]->update(points, body.point_begin, std::min(body.point_end, points.owned), dt);
+    for (const BodyInfo& body : model_.bodies) {
+      const LocalIndex begin = body.point_begin, end = std::min(body.point_end, points.owned);
+      const Material& material = *model_.materials[body.material];
+      if (dt > 0.0 && end > begin)
+        material.heat(points, begin, end,
+                      std::span<const double>(transfer_heat_)
+                          .subspan(static_cast<std::size_t>(begin), static_cast<std::size_t>(end - begin)));
+      material.update(points, begin, end, dt);
+    }
   } catch (const PointError& e) {
     failAtPoint(static_cast<LocalIndex>(e.point()), e.what());
   }

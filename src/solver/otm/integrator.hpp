@@ -90,8 +90,9 @@ class Integrator {
     Vec3 du, dv;
   };
   std::vector<NodeIncrement> increment_;
-  std::vector<double> j_point_;      // det(dF) per point (after averaging)
-  std::vector<double> volume_rate_;  // ln det(dF) / dt of each point's last step, 1/s (time step)
+  std::vector<double> j_point_;        // det(dF) per point (after averaging)
+  std::vector<double> transfer_heat_;  // J per point: the kinetic energy the step's transfer took (heat)
+  std::vector<double> volume_rate_;    // ln det(dF) / dt of each point's last step, 1/s (time step)
   VolumePatch patch_;
   std::vector<double> force_pressure_;  // per point, VolumePatch::forcePressure
   std::vector<PointLoad> loads_;        // assembly scratch, one record per point
