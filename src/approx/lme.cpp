@@ -84,12 +84,14 @@ const char* describe(Status status) {
       return "Newton iteration did not converge";
     case Status::outside_hull:
       return "point outside the convex hull of its nodes";
+    case Status::ill_conditioned:
+      return "nodes nearly coplanar as seen from the point (ill-conditioned gradients)";
   }
   return "unknown";
 }
 
 Result shapeFunctions(std::span<const Vec3> d, double beta, double h, Vec3& lambda, std::span<double> N,
-                      std::span<Vec3> dN) {
+                      std::span<Vec3> dN, bool check_conditioning) {
   Result result;
   if (!lambda.allFinite()) lambda.setZero();
   // The offsets and -beta |d_a|^2 once per call (per thread, so the time loop does not allocate
@@ -144,6 +146,16 @@ Result shapeFunctions(std::span<const Vec3> d, double beta, double h, Vec3& lamb
     J = trial_J;
   }
   if (result.status != Status::converged) return result;
+  if (check_conditioning) {
+    // The smallest eigenvalue of J / h^2 reaches min_covariance if and only if J / h^2 - min_covariance I
+    // is positive semi-definite: its leading principal minors (Sylvester), without an eigensolver.
+    const Mat3 b = J / h2 - min_covariance * Mat3::Identity();
+    const double minor2 = b(0, 0) * b(1, 1) - b(0, 1) * b(0, 1);
+    if (!(b(0, 0) > 0.0 && minor2 > 0.0 && b.determinant() > 0.0)) {
+      result.status = Status::ill_conditioned;
+      return result;
+    }
+  }
   // J is symmetric positive definite here (checked in the iteration): invert it once.
   // grad N_a = -N_a J^-1 d_a, one component at a time over all nodes (vectorised), then interleaved.
   // The solve is done, so its arrays hold the components: base and w the first two, and x the

@@ -14,10 +14,12 @@
 namespace kessler::lme {
 
 // beta = gamma / h^2 and the cut-off radius r = h sqrt(-ln tol / gamma) where N_a < tol.
-inline double beta(double gamma, double h) { return gamma / (h * h); }
+inline double beta(double gamma, double h) {
+  return gamma / (h * h);
+}
 double cutoffRadius(double gamma, double h, double tolerance);
 
-enum class Status { converged, not_converged, outside_hull };
+enum class Status { converged, not_converged, outside_hull, ill_conditioned };
 
 struct Result {
   Status status = Status::converged;
@@ -25,10 +27,20 @@ struct Result {
   double residual = 0.0;  // |sum N_a (x - x_a)| / h at the end
 };
 
+// The smallest principal variance of the weighted node offsets (the covariance J) over h^2 below
+// which shapeFunctions() refuses the point as ill-conditioned when asked to: its gradients,
+// -N_a J^-1 d_a, grow as the inverse. An interior point of a Gmsh mesh has about 0.1
+// (1 / (2 gamma) at gamma = 4), a point a quarter spacing inside a flat free surface about 0.03
+// across it; a point whose nodes are nearly coplanar as seen from it (at the edge of their hull,
+// or squeezed into a layer) less. At about 2e-4, gradients of 800 / h put a node of a 0.25 mm
+// sphere-plate run at 46 km/s in one step (docs/theory.md §2).
+inline constexpr double min_covariance = 1e-3;
+
 // Shape functions at a point from the offsets d_a = x - x_a of its nodes. On input `lambda`
-// is the starting guess; on output the minimiser. N and dN have the size of d.
+// is the starting guess; on output the minimiser. N and dN have the size of d. With
+// `check_conditioning`, a covariance below min_covariance h^2 is Status::ill_conditioned.
 Result shapeFunctions(std::span<const Vec3> d, double beta, double h, Vec3& lambda, std::span<double> N,
-                      std::span<Vec3> dN);
+                      std::span<Vec3> dN, bool check_conditioning = false);
 
 const char* describe(Status status);
 

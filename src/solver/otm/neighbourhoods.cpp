@@ -182,8 +182,10 @@ lme::Result Neighbourhoods::shapeFunctionsAt(Model& model, LocalIndex p, std::sp
   const PointStore& points = model.points;
   s.offsets.resize(row.size());
   for (std::size_t i = 0; i < row.size(); ++i) s.offsets[i] = points.x[p] - model.nodes.x[row[i]];
+  // Failed material and debris are released when their nodes are nearly coplanar as seen from them
+  // (lme::min_covariance): tangled or leaving, and their gradients would fling their nodes.
   return lme::shapeFunctions(s.offsets, lme::beta(gamma_scale * settings_.lme_gamma, h), h, model.points.lambda[p], N,
-                             dN);
+                             dN, points.eroded[p] != 0);
 }
 
 void Neighbourhoods::carryDebris(Model& model, LocalIndex p, Index first, std::size_t n, Scratch& s) const {

@@ -106,6 +106,29 @@ TEST(Lme, ReportsCoplanarNodes) {
   EXPECT_NE(e.result.status, lme::Status::converged);
 }
 
+TEST(Lme, RefusesNodesNearlyCoplanarAsSeenFromThePoint) {
+  // Two layers of nodes a thousandth of a spacing apart, the point between them: inside their hull,
+  // so Newton converges, but the gradients across the layers would be of order 1e3 / h. Refused as
+  // ill-conditioned when asked (the solver asks for failed material, which it then retries and
+  // releases). Apart by a spacing, fine.
+  for (const double gap : {1e-3, 1.0}) {
+    std::vector<Vec3> nodes;
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j)
+        for (const double z : {-0.5 * gap, 0.5 * gap}) nodes.emplace_back(i, j, z);
+    std::vector<Vec3> d;
+    for (const Vec3& xa : nodes) d.push_back(Vec3(1.5, 1.5, 0.0) - xa);
+    std::vector<double> N(d.size());
+    std::vector<Vec3> dN(d.size());
+    Vec3 lambda = Vec3::Zero();
+    const lme::Result checked = lme::shapeFunctions(d, lme::beta(4.0, 1.0), 1.0, lambda, N, dN, true);
+    EXPECT_EQ(checked.status, gap < 0.5 ? lme::Status::ill_conditioned : lme::Status::converged) << "gap " << gap;
+    // Unasked, the same shape functions are returned as converged.
+    lambda.setZero();
+    EXPECT_EQ(lme::shapeFunctions(d, lme::beta(4.0, 1.0), 1.0, lambda, N, dN).status, lme::Status::converged);
+  }
+}
+
 TEST(Lme, CutoffRadiusGivesTolerance) {
   const double gamma = 1.8, h = 2e-3, tol = 1e-6;
   const double r = lme::cutoffRadius(gamma, h, tol);
