@@ -102,20 +102,21 @@ void Diagnostics::checkPoints(const Model& model, const StepInfo& at) {
 void Diagnostics::checkTimeStep(const Model& model, const StepInfo& at) const {
   const double floor = settings_.min_dt_fraction * at.dt_initial;
   if (settings_.min_dt_fraction <= 0.0 || at.dt_next >= floor || model.points.owned == 0) return;
-  // Name the point that sets the step (Integrator::stableStep): the smallest l / c with l = h0
-  // times the smallest principal stretch, lowest index on a tie.
+  // Name the point that sets the step (Integrator::stableStep): the smallest l / c with l its
+  // stepLength, lowest index on a tie.
   const PointStore& s = model.points;
   std::vector<double> ratio(s.owned, std::numeric_limits<double>::infinity());
 #pragma omp parallel for schedule(static)
   for (LocalIndex p = 0; p < s.owned; ++p)
-    if (!s.debris(p)) ratio[p] = stepLength(s, p) / s.sound_speed[p];
+    if (!s.debris(p)) ratio[p] = stepLength(model, p) / s.sound_speed[p];
   const auto limiting = static_cast<LocalIndex>(std::min_element(ratio.begin(), ratio.end()) - ratio.begin());
   throw NumericalError(describePoint(
       model, at, limiting,
       fmt::format("time step collapsed: dt = {:.6g} s is below min_dt_fraction {:.6g} of the initial {:.6g} s "
-                  "(this point sets it: length h0 lambda_min = {:.6g} m with smallest principal stretch "
-                  "lambda_min = {:.6g}, sound speed c = {:.6g} m/s, volume V/V0 = {:.6g})",
-                  at.dt_next, settings_.min_dt_fraction, at.dt_initial, stepLength(s, limiting),
+                  "(this point sets it: length {:.6g} m, from h0 times its smallest principal stretch "
+                  "lambda_min = {:.6g} or, where that is below half its spacing, from its support's spread; "
+                  "sound speed c = {:.6g} m/s, volume V/V0 = {:.6g})",
+                  at.dt_next, settings_.min_dt_fraction, at.dt_initial, stepLength(model, limiting),
                   smallestStretch(s.F[limiting]), s.sound_speed[limiting], s.volume[limiting] / s.volume0[limiting])));
 }
 

@@ -268,17 +268,36 @@ double smallestStretch(const Mat3& F) {
   return std::sqrt(std::max(eigen.eigenvalues()[0], 0.0));
 }
 
-double stepLength(const PointStore& points, LocalIndex p) {
+double stepLength(const Model& model, LocalIndex p) {
+  const PointStore& points = model.points;
   // Failed material has no shear stiffness and its F is history only (its shape functions, as
   // everyone's, are built on the current nodes with support h): its length is its current spacing.
   if (points.failed(p)) return points.spacing(p);
-  return points.spacing0[p] * smallestStretch(points.F[p]);
+  const double stretch = smallestStretch(points.F[p]);
+  const double stretched = points.spacing0[p] * stretch;
+  // stretched >= flattened * spacing, with the spacing h0 (V/V0)^(1/3), without the cube root.
+  if (stretch * stretch * stretch >= flattened * flattened * flattened * points.volume[p] / points.volume0[p])
+    return stretched;
+  const double spacing = points.spacing(p);
+  // A flattened point: its support is rebuilt on the current nodes within a sphere, so its gradients,
+  // which set the stiffness the step must resolve, vary over the spread of those nodes, not over the
+  // thickness its F has squeezed it to.
+  const Connectivity& conn = model.connectivity;
+  Mat3 covariance = Mat3::Zero();
+  for (Index e = conn.offset[p]; e < conn.offset[p + 1]; ++e) {
+    const Vec3 d = model.nodes.x[conn.node[e]] - points.x[p];
+    covariance.noalias() += conn.N[e] * d * d.transpose();
+  }
+  Eigen::SelfAdjointEigenSolver<Mat3> eigen;
+  eigen.computeDirect(covariance, Eigen::EigenvaluesOnly);
+  const double spread = support_lengths * std::sqrt(std::max(eigen.eigenvalues()[0], 0.0));
+  return std::max(stretched, std::min(spacing, spread));
 }
 
 // CFL condition over material points: dt = cfl * min_p l_p / c_p (docs/theory.md §4 step 7). The
-// length l_p is the reference spacing times the smallest principal stretch of F: plastic flow
-// keeps the volume (so h0 J^(1/3) would not shrink) while it can flatten the material, and the
-// nodes, to a fraction of their spacing in one direction. And no point may change its volume by
+// length l_p is stepLength: the reference spacing times the smallest principal stretch of F (plastic
+// flow keeps the volume, so h0 J^(1/3) would not shrink, while it can flatten the material to a
+// fraction of its spacing), or the spread of a flattened point's support. And no point may change its volume by
 // more than cfl/3 (10% at the default) in a step, |div v| dt <= cfl/3, as LULESH's dvovmax bounds
 // it: the bound that sets the step where there is no sound speed (a cold gas, p = 0); elsewhere
 // the viscosity's share of the signal speed makes it redundant.
@@ -288,7 +307,7 @@ double Integrator::stableStep() const {
 #pragma omp parallel for schedule(static) reduction(min : dt)
   for (LocalIndex p = 0; p < points.owned; ++p) {
     if (points.debris(p)) continue;
-    if (points.sound_speed[p] > 0.0) dt = std::min(dt, stepLength(points, p) / points.sound_speed[p]);
+    if (points.sound_speed[p] > 0.0) dt = std::min(dt, stepLength(model_, p) / points.sound_speed[p]);
     if (volume_rate_[p] != 0.0) dt = std::min(dt, 1.0 / (3.0 * std::abs(volume_rate_[p])));
   }
   KESSLER_VERIFY(std::isfinite(dt) && dt > 0.0,

@@ -18,9 +18,14 @@ namespace kessler::otm {
 // time step's length scale is the reference spacing times it.
 double smallestStretch(const Mat3& F);
 // That length of point p: h0 times the smallest principal stretch (a failed point: its current
-// spacing). The stable step is cfl times the smallest stepLength / c over the points that are
-// not debris.
-double stepLength(const PointStore& points, LocalIndex p);
+// spacing). Where that is below `flattened` times the point's current spacing, the spread of its own
+// support decides instead: the length is then at least `support_lengths` times the square root of the
+// smallest eigenvalue of the support's covariance sum_a N_a (x_a - x_p)(x_a - x_p)^T, at most the
+// spacing (docs/theory.md §4 step 7). The stable step is cfl times the smallest stepLength / c over
+// the points that are not debris.
+inline constexpr double flattened = 0.5;
+inline constexpr double support_lengths = 4.0;
+double stepLength(const Model& model, LocalIndex p);
 
 struct Energies {
   double kinetic = 0.0;   // 1/2 sum m_p |v_p|^2

@@ -138,8 +138,9 @@ TEST_F(DiagnosticsTest, NamesThePointThatCollapsesTheTimeStep) {
 
 TEST_F(DiagnosticsTest, NamesTheFlattenedPointThatSetsTheStep) {
   // Isochoric flattening: the volume (and so the spacing) is unchanged, the smallest stretch is
-  // 0.01, and that is what sets the step (Integrator::stableStep).
-  model_.points.F[7] = Vec3(10.0, 10.0, 0.01).asDiagonal();
+  // 0.6, and that is what sets the step (Integrator::stableStep; below half the spacing the spread of
+  // the point's support would decide, and its nodes here are as meshed).
+  model_.points.F[7] = Vec3(1.0 / std::sqrt(0.6), 1.0 / std::sqrt(0.6), 0.6).asDiagonal();
   StepInfo collapsed = at();
   collapsed.dt_next = 1e-4 * collapsed.dt_initial;
   try {
@@ -148,7 +149,7 @@ TEST_F(DiagnosticsTest, NamesTheFlattenedPointThatSetsTheStep) {
   } catch (const NumericalError& e) {
     const std::string m = e.what();
     EXPECT_EQ(m.rfind(pointPrefix(7), 0), 0u) << m;
-    EXPECT_NE(m.find("smallest principal stretch lambda_min = 0.01,"), std::string::npos) << m;
+    EXPECT_NE(m.find("smallest principal stretch lambda_min = 0.6 "), std::string::npos) << m;
   }
 }
 
