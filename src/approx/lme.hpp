@@ -14,9 +14,7 @@
 namespace kessler::lme {
 
 // beta = gamma / h^2 and the cut-off radius r = h sqrt(-ln tol / gamma) where N_a < tol.
-inline double beta(double gamma, double h) {
-  return gamma / (h * h);
-}
+inline double beta(double gamma, double h) { return gamma / (h * h); }
 double cutoffRadius(double gamma, double h, double tolerance);
 
 enum class Status { converged, not_converged, outside_hull, ill_conditioned };

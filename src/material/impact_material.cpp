@@ -204,8 +204,8 @@ void ImpactMaterial::update(PointStore& points, LocalIndex begin, LocalIndex end
   std::string why;
   std::visit(
       [&](const auto& eos, const auto& law) {
-  // Dynamic: points in plastic flow (the impact zone, all in one part of the body) cost
-  // several times more than elastic ones, and each point's update is its own.
+        // Dynamic: points in plastic flow (the impact zone, all in one part of the body) cost
+        // several times more than elastic ones, and each point's update is its own.
 #pragma omp parallel for schedule(dynamic, 512)
         for (LocalIndex p = begin; p < end; ++p) {
           if (points.debris(p)) {
