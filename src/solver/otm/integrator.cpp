@@ -262,10 +262,19 @@ void Integrator::updateMaterials(double dt) {
   if (bad < points.owned) failAtPoint(bad, "the material update gave a non-finite stress, energy or sound speed");
 }
 
-double smallestStretch(const Mat3& F) {
+namespace {
+
+// The square root of the smallest eigenvalue of a symmetric positive semi-definite matrix (closed form).
+double smallestRootEigenvalue(const Mat3& symmetric) {
   Eigen::SelfAdjointEigenSolver<Mat3> eigen;
-  eigen.computeDirect(F.transpose() * F, Eigen::EigenvaluesOnly);
+  eigen.computeDirect(symmetric, Eigen::EigenvaluesOnly);
   return std::sqrt(std::max(eigen.eigenvalues()[0], 0.0));
+}
+
+}  // namespace
+
+double smallestStretch(const Mat3& F) {
+  return smallestRootEigenvalue(F.transpose() * F);
 }
 
 double stepLength(const Model& model, LocalIndex p) {
@@ -288,10 +297,7 @@ double stepLength(const Model& model, LocalIndex p) {
     const Vec3 d = model.nodes.x[conn.node[e]] - points.x[p];
     covariance.noalias() += conn.N[e] * d * d.transpose();
   }
-  Eigen::SelfAdjointEigenSolver<Mat3> eigen;
-  eigen.computeDirect(covariance, Eigen::EigenvaluesOnly);
-  const double spread = support_lengths * std::sqrt(std::max(eigen.eigenvalues()[0], 0.0));
-  return std::max(stretched, std::min(spacing, spread));
+  return std::max(stretched, std::min(spacing, support_lengths * smallestRootEigenvalue(covariance)));
 }
 
 // CFL condition over material points: dt = cfl * min_p l_p / c_p (docs/theory.md §4 step 7). The
