@@ -13,6 +13,7 @@
 // the densest point of the plateau, not an average.
 #include "geometry/mesh.hpp"
 #include "material/library.hpp"
+#include "solver/otm/volume_patch.hpp"
 #include "verify/fixtures.hpp"
 #include "verify/impact_problems.hpp"
 
@@ -37,7 +38,9 @@ struct Plateau {
 
 // The measured half: the points whose initial height z0 (indexed by point id; the integrator reorders
 // the points) is positive; `upstream`: the velocity of its material ahead of the shock.
-Plateau measure(const otm::Model& model, const std::vector<double>& z0_by_id, double h, double upstream) {
+// `alpha`: the volume stabilisation's factor, for the slabs' mean stabilisation pressure.
+Plateau measure(const otm::Model& model, const std::vector<double>& z0_by_id, double h, double upstream,
+                double alpha) {
   const double slab = 0.5 * h;
   const int slabs = static_cast<int>(std::ceil(length / slab)) + 1;
   std::vector<double> mass(slabs, 0.0), momentum(slabs, 0.0), volume_of(slabs, 0.0);
@@ -56,6 +59,7 @@ Plateau measure(const otm::Model& model, const std::vector<double>& z0_by_id, do
     out_slab.pressure += m * (-points.stress[p].trace() / 3.0 - points.viscous_pressure[p]);
     out_slab.viscous_pressure += m * points.viscous_pressure[p];
     out_slab.energy += m * points.energy[p];
+    out_slab.stabilisation_pressure += m * otm::stabilisationPressure(points, p, alpha);
   }
   for (int s = 0; s < slabs; ++s) {
     Slab& out_slab = out.slabs[static_cast<std::size_t>(s)];
@@ -66,6 +70,7 @@ Plateau measure(const otm::Model& model, const std::vector<double>& z0_by_id, do
     out_slab.pressure /= mass[s];
     out_slab.viscous_pressure /= mass[s];
     out_slab.energy /= mass[s];
+    out_slab.stabilisation_pressure /= mass[s];
   }
   double vmax = 0.0;
   for (int s = 0; s < slabs; ++s)
@@ -150,17 +155,18 @@ Hugoniot3dResult runHugoniot3d(double mesh_size, otm::Settings settings, bool on
   settings.end_time = t2;
   otm::Integrator integrator(model, settings);
   integrator.initialise();
+  const double alpha = settings.volume_averaging ? settings.volume_stabilisation : 0.0;
   const double energy0 = integrator.energies().total();
   Plateau first;
   double t_first = 0.0;
   while (!integrator.finished()) {
     integrator.step();
     if (t_first == 0.0 && integrator.time() >= t1) {
-      first = measure(model, z0, h, upstream);
+      first = measure(model, z0, h, upstream, alpha);
       t_first = integrator.time();
     }
   }
-  const Plateau last = measure(model, z0, h, upstream);
+  const Plateau last = measure(model, z0, h, upstream, alpha);
   r.particle_velocity = last.velocity;
   r.shock_speed = (last.front - first.front) / (integrator.time() - t_first) - upstream;
   r.pressure = last.pressure;

@@ -47,6 +47,7 @@ Outcome spall();
 // One slab of the target at the end of hugoniot-3d, mass-weighted (for the shock study).
 struct Slab {
   double z, velocity, density, max_density, pressure, viscous_pressure, energy;  // SI
+  double stabilisation_pressure = 0.0;  // mass-weighted mean of the volume stabilisation's pressure, Pa
 };
 
 struct Hugoniot3dResult {

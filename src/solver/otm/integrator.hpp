@@ -81,6 +81,7 @@ class Integrator {
   void updatePoints();
   void initialVolumeRates();
   void updateMaterials(double dt);
+  void balanceEnergy();
   double stableStep() const;
   [[noreturn]] void failAtPoint(LocalIndex p, const std::string& what) const;
 
@@ -99,9 +100,13 @@ class Integrator {
   std::vector<double> transfer_heat_;  // J per point: the kinetic energy the step's transfer took (heat)
   std::vector<double> volume_rate_;    // ln det(dF) / dt of each point's last step, 1/s (time step)
   VolumePatch patch_;
-  std::vector<double> force_pressure_;  // per point, VolumePatch::forcePressure
-  std::vector<PointLoad> loads_;        // assembly scratch, one record per point
-  double dt_step_ = 0.0;                // length of the step in progress
+  std::vector<double> stabilisation_pressure_;  // per point, VolumePatch::stabilisationPressures
+  // Per point, the work its forces did over the step (updatePoints), then plus its energy before the
+  // material update: what balanceEnergy() compares the updated energy with, J.
+  std::vector<double> force_work_;
+  std::vector<PointLoad> loads_;  // assembly scratch, one record per point
+  double dt_step_ = 0.0;          // length of the step in progress
+  double dt_average_ = 0.0;       // the kick's interval of the step in progress (updateNodes)
   PhaseTimers timers_;
   double time_ = 0.0;
   double dt_last_ = 0.0;  // dt_k: the step just taken (0 before the first)

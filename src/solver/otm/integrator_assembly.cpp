@@ -3,7 +3,7 @@
 namespace kessler::otm {
 
 void assembleNodes(const Connectivity& conn, const PointStore& points, NodeStore& nodes, std::vector<PointLoad>& loads,
-                   const std::vector<double>* force_pressure) {
+                   const std::vector<double>* stabilisation) {
   const LocalIndex np = points.owned;
   loads.resize(static_cast<std::size_t>(np));
 #pragma omp parallel
@@ -15,10 +15,8 @@ void assembleNodes(const Connectivity& conn, const PointStore& points, NodeStore
       load.momentum = points.mass[p] * points.v[p];
       if (points.debris(p))
         load.minus_volume_stress.setZero();
-      else if (force_pressure)
-        load.minus_volume_stress =
-            -points.volume[p] *
-            (points.stress[p] - (points.stress[p].trace() / 3.0 + (*force_pressure)[p]) * Mat3::Identity());
+      else if (stabilisation)
+        load.minus_volume_stress = -points.volume[p] * (points.stress[p] - (*stabilisation)[p] * Mat3::Identity());
       else
         load.minus_volume_stress = -points.volume[p] * points.stress[p];
     }

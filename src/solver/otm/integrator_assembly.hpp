@@ -20,10 +20,11 @@ struct PointLoad {
 };
 
 // Fills nodes.mass, nodes.momentum and nodes.force for the owned nodes. `loads` is scratch,
-// resized to the number of points (kept between calls so the time loop does not allocate). With
-// `force_pressure` (per point; VolumePatch::forcePressure) the isotropic part of each point's stress
-// in the force is that pressure instead of its own.
+// resized to the number of points (kept between calls so the time loop does not allocate), and
+// holds each point's -V sigma of the step afterwards (Integrator::updatePoints books its work).
+// With `stabilisation` (per point, Pa; VolumePatch::stabilisationPressures) the forces carry
+// sigma - S I: the volume stabilisation's pressure S on top of each point's own stress.
 void assembleNodes(const Connectivity& conn, const PointStore& points, NodeStore& nodes, std::vector<PointLoad>& loads,
-                   const std::vector<double>* force_pressure = nullptr);
+                   const std::vector<double>* stabilisation = nullptr);
 
 }  // namespace kessler::otm

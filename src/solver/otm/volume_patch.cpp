@@ -92,50 +92,21 @@ double VolumePatch::apply(const Connectivity& conn, LocalIndex owned_nodes, bool
   return deterministicSum(points.owned, 0.0, [&](LocalIndex p) { return work_[p]; });
 }
 
-double VolumePatch::closeStep(const PointStore& points, double alpha) const {
+double VolumePatch::closeStep(const PointStore& points, double alpha) {
   if (!(alpha > 0.0) || defect_step_.size() != static_cast<std::size_t>(points.owned)) return 0.0;
   return deterministicSum(points.owned, 0.0, [&](LocalIndex p) {
     if (points.debris(p)) return 0.0;
-    return -0.5 * stabilisationPressure(points, p, alpha) * points.volume[p] * defect_step_[p];
+    const double second = -0.5 * stabilisationPressure(points, p, alpha) * points.volume[p] * defect_step_[p];
+    work_[p] += second;
+    return second;
   });
 }
 
-void VolumePatch::forcePressure(const Connectivity& conn, LocalIndex owned_nodes, const PointStore& points,
-                                double alpha, std::vector<double>& pi) {
-  record_.resize(static_cast<std::size_t>(points.owned));
-  node_.resize(static_cast<std::size_t>(owned_nodes));  // here: the nodal (P - S) V / m
-  pi.resize(static_cast<std::size_t>(points.owned));
-#pragma omp parallel
-  {
-#pragma omp for schedule(static)
-    for (LocalIndex p = 0; p < points.owned; ++p) {
-      if (points.debris(p)) {
-        record_[p] = {0.0, 0.0, 0.0};
-        continue;
-      }
-      const double P = -points.stress[p].trace() / 3.0;
-      pi[p] = alpha > 0.0 ? stabilisationPressure(points, p, alpha) : 0.0;  // S for now
-      record_[p] = {points.mass[p], (P - pi[p]) * points.volume[p], 0.0};
-    }
-#pragma omp for schedule(static)
-    for (LocalIndex a = 0; a < owned_nodes; ++a) {
-      double m = 0.0, g = 0.0;
-      for (Index k = conn.node_offset[a]; k < conn.node_offset[a + 1]; ++k) {
-        const Connectivity::NodeSlot slot = conn.node_slot[k];
-        const double N = conn.N[slot.entry];
-        m += N * record_[slot.point][0];
-        g += N * record_[slot.point][1];
-      }
-      node_[a][0] = m > 0.0 ? g / m : 0.0;
-    }
-#pragma omp for schedule(static)
-    for (LocalIndex p = 0; p < points.owned; ++p) {
-      if (points.debris(p)) continue;
-      double share = 0.0;
-      for (Index e = conn.offset[p]; e < conn.offset[p + 1]; ++e) share += conn.N[e] * node_[conn.node[e]][0];
-      pi[p] += points.density(p) * share;
-    }
-  }
+void VolumePatch::stabilisationPressures(const PointStore& points, double alpha, std::vector<double>& s) {
+  s.resize(static_cast<std::size_t>(points.owned));
+#pragma omp parallel for schedule(static)
+  for (LocalIndex p = 0; p < points.owned; ++p)
+    s[p] = alpha > 0.0 && !points.debris(p) ? stabilisationPressure(points, p, alpha) : 0.0;
 }
 
 }  // namespace kessler::otm

@@ -27,15 +27,14 @@ class VolumePatch {
                std::vector<double>& j);
   // The rest of the step's stabilisation work, with the pressure after the material update (the one
   // the next step's forces carry): apply() books the step's defect at the old pressure's half.
-  double closeStep(const PointStore& points, double alpha) const;
+  // Afterwards work() holds each point's whole share of the step.
+  double closeStep(const PointStore& points, double alpha);
+  // Per point, the stabilisation's work of the last step, J (both halves once closeStep() has run).
+  const std::vector<double>& work() const { return work_; }
 
-  // The pressure each point's own gradients must carry in the nodal forces (with its deviator) so
-  // that the forces do the work the averaged update books, sum_p P_p V_p d ln(j_p averaged), and
-  // the stabilisation's: pi_q = A^T((P - S) V)_q / V_q + S_q, with A the averaging operator,
-  // P = -tr(sigma)/3 (viscosity included) and S the stabilisation pressure with factor `alpha`
-  // (docs/theory.md §4). Per point in `pi` (unused for debris).
-  void forcePressure(const Connectivity& conn, LocalIndex owned_nodes, const PointStore& points, double alpha,
-                     std::vector<double>& pi);
+  // The stabilisation pressure of every owned point (0 for debris) in `s`, for the nodal forces: each
+  // point's forces carry its own stress plus this pressure (docs/theory.md §4).
+  static void stabilisationPressures(const PointStore& points, double alpha, std::vector<double>& s);
 
  private:
   // Per point, what the gathers read: m_p, m_p ln det(dF), m_p tr(dF - I) (zero for debris); per

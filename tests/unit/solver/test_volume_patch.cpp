@@ -139,21 +139,18 @@ double energyChange(bool averaging, double alpha, double cfl) {
 }
 
 TEST(VolumeStabilisation, ConservesMomentumAndBooksItsEnergy) {
-  // Momentum stays exact. The energy (kinetic, internal and the stabilisation's stored energy) is
-  // conserved as the step shrinks: what is lost is first order in dt (docs/theory.md §4). That needs
-  // the forces to carry the averaging's adjoint pressure (VolumePatch::forcePressure): with each
-  // point's own pressure the averaged update books work the forces did not do, whatever the step.
-  // Measured, with the velocity transfer's loss booked as heat (since 2026-11-25): without
-  // stabilisation -0.48% at cfl 0.1 and -0.15% at 0.03, with it -1.13% and -0.42% (without that
-  // heat: -0.83% and -0.26%, -2.2% and -0.81%).
-  const double cfls[2] = {0.1, 0.03};
+  // Momentum stays exact. Kinetic, internal and the stabilisation's stored energy balance at any
+  // step, with or without stabilisation: each intact point takes as internal energy the work its
+  // forces did on the nodes (the compatible energy update, docs/theory.md §4 step 5). What is left is
+  // the work of the few points that fail at the contact, which is not booked: measured 3.7e-5 and
+  // 1.8e-5 of the energy (alpha 0, 1) and 1.2e-5 without averaging, at cfl 0.1 (with no failed point
+  // the balance holds to 1e-15). Before that update (2026-11-26) the total changed by -1.13% at cfl
+  // 0.1 with stabilisation and -0.48% without, first order in the step.
   for (double alpha : {0.0, 1.0}) {
-    double change[2];
-    for (int i = 0; i < 2; ++i) change[i] = energyChange(true, alpha, cfls[i]);
-    EXPECT_LT(std::abs(change[1]), 0.01) << "alpha " << alpha;
-    EXPECT_LT(std::abs(change[1]), 0.5 * std::abs(change[0]))
-        << "alpha " << alpha << ": " << change[0] << " at cfl 0.1, " << change[1] << " at 0.03";
+    const double change = energyChange(true, alpha, 0.1);
+    EXPECT_LT(std::abs(change), 1e-4) << "alpha " << alpha;
   }
+  EXPECT_LT(std::abs(energyChange(false, 0.0, 0.1)), 1e-4) << "without averaging";
 }
 
 TEST(TimeStep, AColdGasStepsOnItsVolumeChange) {
