@@ -76,13 +76,13 @@ int main(int argc, char** argv) {
         100 * (r.particle_velocity / r.reference_velocity - 1), r.shock_speed,
         100 * (r.shock_speed / r.reference_shock_speed - 1), 1e-9 * r.max_pressure, 100 * r.energy_change);
     if (!profile) continue;
-    fmt::print("{:>8} {:>7} {:>7} {:>7} {:>7} {:>7} {:>7} {:>7}\n", "z_mm", "v", "rho", "max", "p_GPa", "q_GPa", "e_MJkg",
-               "S_GPa");
+    fmt::print("{:>8} {:>7} {:>7} {:>7} {:>7} {:>7} {:>7} {:>7}\n", "z_mm", "v", "rho", "max", "p_GPa", "q_GPa",
+               "e_MJkg", "S_GPa");
     for (const kessler::verify::Slab& s : r.profile)
       if (s.density > 0.0 && std::abs(s.velocity) > 0.01 * r.reference_velocity)
-        fmt::print("{:8.2f} {:7.0f} {:7.4f} {:7.4f} {:7.2f} {:7.2f} {:7.3f} {:7.2f}\n", 1e3 * s.z, s.velocity, s.density / rho0,
-                   s.max_density / rho0, 1e-9 * s.pressure, 1e-9 * s.viscous_pressure, 1e-6 * s.energy,
-                   1e-9 * s.stabilisation_pressure);
+        fmt::print("{:8.2f} {:7.0f} {:7.4f} {:7.4f} {:7.2f} {:7.2f} {:7.3f} {:7.2f}\n", 1e3 * s.z, s.velocity,
+                   s.density / rho0, s.max_density / rho0, 1e-9 * s.pressure, 1e-9 * s.viscous_pressure,
+                   1e-6 * s.energy, 1e-9 * s.stabilisation_pressure);
   }
   return 0;
 }

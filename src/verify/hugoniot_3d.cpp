@@ -39,8 +39,7 @@ struct Plateau {
 // The measured half: the points whose initial height z0 (indexed by point id; the integrator reorders
 // the points) is positive; `upstream`: the velocity of its material ahead of the shock.
 // `alpha`: the volume stabilisation's factor, for the slabs' mean stabilisation pressure.
-Plateau measure(const otm::Model& model, const std::vector<double>& z0_by_id, double h, double upstream,
-                double alpha) {
+Plateau measure(const otm::Model& model, const std::vector<double>& z0_by_id, double h, double upstream, double alpha) {
   const double slab = 0.5 * h;
   const int slabs = static_cast<int>(std::ceil(length / slab)) + 1;
   std::vector<double> mass(slabs, 0.0), momentum(slabs, 0.0), volume_of(slabs, 0.0);

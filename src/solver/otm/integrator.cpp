@@ -263,9 +263,8 @@ void Integrator::balanceEnergy() {
   const bool averaged = stored.size() == static_cast<std::size_t>(points.owned);
 #pragma omp parallel for schedule(static)
   for (LocalIndex p = 0; p < points.owned; ++p)
-    transfer_heat_[p] = points.eroded[p] ? 0.0
-                                         : force_work_[p] - (averaged ? stored[p] : 0.0) -
-                                               points.mass[p] * points.energy[p];
+    transfer_heat_[p] =
+        points.eroded[p] ? 0.0 : force_work_[p] - (averaged ? stored[p] : 0.0) - points.mass[p] * points.energy[p];
   for (const BodyInfo& body : model_.bodies) {
     const LocalIndex begin = body.point_begin, end = std::min(body.point_end, points.owned);
     if (end > begin)
