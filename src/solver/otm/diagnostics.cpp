@@ -90,7 +90,9 @@ void Diagnostics::checkPoints(const Model& model, const StepInfo& at) {
     const LocalIndex end = std::min(n, (b + 1) * block);
     for (LocalIndex p = b * block; p < end; ++p) {
       if (!pointHealthy(s, p)) bad = std::min(bad, p);
-      sum += s.mass[p] * (0.5 * s.v[p].squaredNorm() + s.energy[p]);
+      // Internal energy by its size: under the compatible energy update a spurious source shows as
+      // kinetic energy gained and a point cooled below zero (docs/theory.md §4 step 5).
+      sum += s.mass[p] * (0.5 * s.v[p].squaredNorm() + std::abs(s.energy[p]));
     }
     block_energy_[static_cast<std::size_t>(b)] = sum;
   }
@@ -130,7 +132,7 @@ void Diagnostics::checkEnergy(const Model& model, const StepInfo& at, double ref
   // Name the point with the largest specific energy, where a spurious source usually shows.
   const PointStore& s = model.points;
   double largest = -std::numeric_limits<double>::infinity();
-  auto specific = [&](LocalIndex p) { return 0.5 * s.v[p].squaredNorm() + s.energy[p]; };
+  auto specific = [&](LocalIndex p) { return 0.5 * s.v[p].squaredNorm() + std::abs(s.energy[p]); };
 #pragma omp parallel for schedule(static) reduction(max : largest)
   for (LocalIndex p = 0; p < s.owned; ++p) largest = std::max(largest, specific(p));
   LocalIndex hottest = 0;

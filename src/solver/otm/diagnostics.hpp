@@ -5,7 +5,8 @@
 //     specific energy; a collapsed or non-finite point volume;
 //   - the time step collapsing below Settings::min_dt_fraction of the initial step;
 //   - the total (kinetic + internal) energy exceeding (1 + Settings::max_energy_growth) times the
-//     reference energy (the initial total energy).
+//     reference energy (the initial total energy), each point's internal energy counted by its size
+//     (a spurious source that the compatible energy update balances cools a point below zero).
 // Inverted points (det dF <= 0) and failed LME solves are caught where they happen, inside the
 // integrator step; their messages have the same form. Each failure throws NumericalError:
 //   step 812, t = 3.21e-06 s: material point 4711 of body 'plate' at (1, 2, 3) m: <quantity> = <value>
