@@ -38,10 +38,12 @@ struct Settings {
   // overcompress scattered points (docs/theory.md §4).
   bool volume_averaging = true;
   // Its stabilisation: a pressure -alpha rho c^2 d on the volume strain d that the averaging took away
-  // (PointStore::volume_defect), alpha times the point's longitudinal modulus. With alpha = 1 the
-  // nodes feel each point's own volumetric stiffness, so the averaged update has no zero-energy mode
-  // (the crushed axis of a plastic Taylor bar), while the state the material sees (density, pressure,
-  // heating) stays the patch average; smaller alpha trades the one for the other (docs/theory.md §4).
+  // (PointStore::volume_defect), alpha times the point's longitudinal modulus, added to each point's
+  // own stress in the forces. With alpha = 1 the nodes feel each point's whole volumetric stiffness
+  // (the averaged pressure on what the average keeps, the stabilisation on what it takes away), so
+  // the averaged update has no zero-energy mode (the crushed axis of a plastic Taylor bar) and no soft
+  // one, while the state the material sees (density, pressure, heating) stays the patch average
+  // (docs/theory.md §4).
   double volume_stabilisation = 1.0;
   // Visibility across cracks (docs/theory.md §8): a point does not take nodes of its own body that
   // lie behind eroded material, so crack faces separate. Needed for brittle crack growth

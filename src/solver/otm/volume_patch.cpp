@@ -79,7 +79,7 @@ double VolumePatch::apply(const Connectivity& conn, LocalIndex owned_nodes, bool
     if (!averaging) continue;
     // What the average takes away is kept: the stabilisation pressure resists it (docs/theory.md §4).
     // The defect grows by the part of the step's volume strain tr(dF - I) that the average leaves
-    // out: exactly what the stabilisation's forces worked on (forcePressure). Its work is booked with
+    // out. Its work on it, stored energy, is booked with
     // the mean of the pressures before and after the step, -(S_old V_old + S_new V_new)/2 d(defect),
     // as the leapfrog's kinetic energy sees it; here the first half, closeStep() the second.
     const double defect_step = points.dF[p].trace() - 3.0 - average_trace;
