@@ -97,7 +97,9 @@ class Integrator {
   };
   std::vector<NodeIncrement> increment_;
   std::vector<double> j_point_;        // det(dF) per point (after averaging)
-  std::vector<double> transfer_heat_;  // J per point: the kinetic energy the step's transfer took (heat)
+  // J per point, heat to add: before the material update the kinetic energy the step's transfer took,
+  // after it the compatible energy update's balance (balanceEnergy).
+  std::vector<double> transfer_heat_;
   std::vector<double> volume_rate_;    // ln det(dF) / dt of each point's last step, 1/s (time step)
   VolumePatch patch_;
   std::vector<double> stabilisation_pressure_;  // per point, VolumePatch::stabilisationPressures

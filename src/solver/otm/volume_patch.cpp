@@ -79,9 +79,9 @@ double VolumePatch::apply(const Connectivity& conn, LocalIndex owned_nodes, bool
     if (!averaging) continue;
     // What the average takes away is kept: the stabilisation pressure resists it (docs/theory.md §4).
     // The defect grows by the part of the step's volume strain tr(dF - I) that the average leaves
-    // out. Its work on it, stored energy, is booked with
-    // the mean of the pressures before and after the step, -(S_old V_old + S_new V_new)/2 d(defect),
-    // as the leapfrog's kinetic energy sees it; here the first half, closeStep() the second.
+    // out. The stabilisation's work on it is stored energy, booked with the mean of the pressures
+    // before and after the step, -(S_old V_old + S_new V_new)/2 d(defect), as the leapfrog's kinetic
+    // energy sees it; here the first half, closeStep() the second.
     const double defect_step = points.dF[p].trace() - 3.0 - average_trace;
     defect_step_[p] = defect_step;
     if (alpha > 0.0) work_[p] = -0.5 * stabilisationPressure(points, p, alpha) * points.volume[p] * defect_step;
