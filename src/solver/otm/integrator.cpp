@@ -259,38 +259,37 @@ void Integrator::updatePoints() {
 // take none (Material::heat).
 void Integrator::balanceEnergy() {
   PointStore& points = model_.points;
-  const std::vector<double>& stored = patch_.work();
-  const bool averaged = stored.size() == static_cast<std::size_t>(points.owned);
+  const std::vector<double>& stored = patch_.work();  // apply() sizes it every step
 #pragma omp parallel for schedule(static)
   for (LocalIndex p = 0; p < points.owned; ++p)
-    transfer_heat_[p] =
-        points.eroded[p] ? 0.0 : force_work_[p] - (averaged ? stored[p] : 0.0) - points.mass[p] * points.energy[p];
+    transfer_heat_[p] = points.eroded[p] ? 0.0 : force_work_[p] - stored[p] - points.mass[p] * points.energy[p];
+  heatPoints(transfer_heat_);
+}
+
+// Material::heat over each body's range of `heat` (J per point).
+void Integrator::heatPoints(const std::vector<double>& heat) {
+  PointStore& points = model_.points;
   for (const BodyInfo& body : model_.bodies) {
     const LocalIndex begin = body.point_begin, end = std::min(body.point_end, points.owned);
     if (end > begin)
       model_.materials[body.material]->heat(
           points, begin, end,
-          std::span<const double>(transfer_heat_)
-              .subspan(static_cast<std::size_t>(begin), static_cast<std::size_t>(end - begin)));
+          std::span<const double>(heat).subspan(static_cast<std::size_t>(begin), static_cast<std::size_t>(end - begin)));
   }
 }
 
 void Integrator::updateMaterials(double dt) {
   PointStore& points = model_.points;
+  if (dt > 0.0) {
+    heatPoints(transfer_heat_);
+    // What each point's energy must be after the step, less the stabilisation's share (balanceEnergy).
+#pragma omp parallel for schedule(static)
+    for (LocalIndex p = 0; p < points.owned; ++p) force_work_[p] += points.mass[p] * points.energy[p];
+  }
   try {
     for (const BodyInfo& body : model_.bodies) {
       const LocalIndex begin = body.point_begin, end = std::min(body.point_end, points.owned);
-      const Material& material = *model_.materials[body.material];
-      if (dt > 0.0 && end > begin) {
-        material.heat(points, begin, end,
-                      std::span<const double>(transfer_heat_)
-                          .subspan(static_cast<std::size_t>(begin), static_cast<std::size_t>(end - begin)));
-        // What the point's energy must be after the step, less the stabilisation's share
-        // (balanceEnergy).
-#pragma omp parallel for schedule(static)
-        for (LocalIndex p = begin; p < end; ++p) force_work_[p] += points.mass[p] * points.energy[p];
-      }
-      material.update(points, begin, end, dt);
+      model_.materials[body.material]->update(points, begin, end, dt);
     }
   } catch (const PointError& e) {
     failAtPoint(static_cast<LocalIndex>(e.point()), e.what());

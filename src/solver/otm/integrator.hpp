@@ -82,6 +82,7 @@ class Integrator {
   void initialVolumeRates();
   void updateMaterials(double dt);
   void balanceEnergy();
+  void heatPoints(const std::vector<double>& heat);
   double stableStep() const;
   [[noreturn]] void failAtPoint(LocalIndex p, const std::string& what) const;
 
