@@ -1,6 +1,7 @@
 #include "approx/lme.hpp"
 
 #include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 #include <Eigen/StdVector>
 
 #include <algorithm>
@@ -153,7 +154,9 @@ Result shapeFunctions(std::span<const Vec3> d, double beta, double h, Vec3& lamb
     const double minor2 = b(0, 0) * b(1, 1) - b(0, 1) * b(0, 1);
     if (!(b(0, 0) > 0.0 && minor2 > 0.0 && b.determinant() > 0.0)) {
       result.status = Status::ill_conditioned;
-      return result;
+      Eigen::SelfAdjointEigenSolver<Mat3> eigen;
+      eigen.computeDirect(J / h2, Eigen::EigenvaluesOnly);
+      result.covariance = eigen.eigenvalues()[0];
     }
   }
   // J is symmetric positive definite here (checked in the iteration): invert it once.

@@ -23,6 +23,8 @@ struct Result {
   Status status = Status::converged;
   int iterations = 0;
   double residual = 0.0;  // |sum N_a (x - x_a)| / h at the end
+  // With `check_conditioning` and Status::ill_conditioned: the smallest eigenvalue of J / h^2.
+  double covariance = 0.0;
 };
 
 // The smallest principal variance of the weighted node offsets (the covariance J) over h^2 below
@@ -36,7 +38,8 @@ inline constexpr double min_covariance = 1e-3;
 
 // Shape functions at a point from the offsets d_a = x - x_a of its nodes. On input `lambda`
 // is the starting guess; on output the minimiser. N and dN have the size of d. With
-// `check_conditioning`, a covariance below min_covariance h^2 is Status::ill_conditioned.
+// `check_conditioning`, a covariance below min_covariance h^2 is Status::ill_conditioned, with its
+// smallest eigenvalue in Result::covariance; N and dN are then still the (valid) shape functions.
 Result shapeFunctions(std::span<const Vec3> d, double beta, double h, Vec3& lambda, std::span<double> N,
                       std::span<Vec3> dN, bool check_conditioning = false);
 

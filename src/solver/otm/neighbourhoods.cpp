@@ -182,10 +182,10 @@ lme::Result Neighbourhoods::shapeFunctionsAt(Model& model, LocalIndex p, std::sp
   const PointStore& points = model.points;
   s.offsets.resize(row.size());
   for (std::size_t i = 0; i < row.size(); ++i) s.offsets[i] = points.x[p] - model.nodes.x[row[i]];
-  // Failed material and debris are released when their nodes are nearly coplanar as seen from them
-  // (lme::min_covariance): tangled or leaving, and their gradients would fling their nodes.
+  // Nodes nearly coplanar as seen from the point (lme::min_covariance) are refused: debris is not
+  // caught, failed material is retried or released, intact material retried (retryPoints).
   return lme::shapeFunctions(s.offsets, lme::beta(gamma_scale * settings_.lme_gamma, h), h, model.points.lambda[p], N,
-                             dN, points.eroded[p] != 0);
+                             dN, true);
 }
 
 void Neighbourhoods::carryDebris(Model& model, LocalIndex p, Index first, std::size_t n, Scratch& s) const {
@@ -209,14 +209,18 @@ void Neighbourhoods::carryDebris(Model& model, LocalIndex p, Index first, std::s
 }
 
 // A point near a strongly compressed or re-entrant surface can fall outside the hull of the nodes
-// within its cut-off: it is retried from lambda = 0 with radii 1.5, 2.25 and 3.375 times larger and
-// gamma 1, 1/2 and 1/4 times the settings', before the run stops (without the visibility test); a
-// failed point is released instead. Rare, so the connectivity is then rebuilt with the retried rows.
-void Neighbourhoods::retryFailedPoints(Model& model) {
+// within its cut-off, or so near its edge that their covariance is nearly singular
+// (lme::min_covariance) and its gradients would fling its nodes. It is retried from lambda = 0 with
+// radii 1.5, 2.25 and 3.375 times larger and gamma 1, 1/2 and 1/4 times the settings' (without the
+// visibility test). A failed point that stays so is released; an intact one takes the
+// best-conditioned of its attempts, the first included, and the run stops only if none converged.
+// Rare, so the connectivity is then rebuilt with the retried rows (not at all when every retried
+// point keeps its first row).
+void Neighbourhoods::retryPoints(Model& model) {
   PointStore& points = model.points;
   Connectivity& conn = model.connectivity;
   const LocalIndex np = points.owned;
-  std::vector<LocalIndex> retry;
+  std::vector<std::pair<LocalIndex, double>> retry;
   for (const Scratch& s : scratch_) retry.insert(retry.end(), s.retry.begin(), s.retry.end());
   if (retry.empty()) return;
   std::sort(retry.begin(), retry.end());  // in point order, as the rows
@@ -226,14 +230,15 @@ void Neighbourhoods::retryFailedPoints(Model& model) {
   s.dN.clear();
   s.rows.clear();
   std::vector<std::size_t> start(retry.size() + 1, 0);
+  std::vector<char> kept(retry.size(), 0);  // the point keeps the row of its first attempt
   LocalIndex failed = np;
   lme::Result failure;
   for (std::size_t k = 0; k < retry.size(); ++k) {
-    const LocalIndex p = retry[k];
+    const auto [p, first_covariance] = retry[k];
     lme::Result r;
     int n = 0;
-    for (int attempt = 1; attempt < 4; ++attempt) {
-      n = gather(model, p, std::pow(1.5, attempt), false, s);
+    auto attempt = [&](int i) {
+      n = gather(model, p, std::pow(1.5, i), false, s);
       const auto size = static_cast<std::size_t>(n);
       s.N.resize(start[k] + size);
       s.dN.resize(start[k] + size);
@@ -242,26 +247,41 @@ void Neighbourhoods::retryFailedPoints(Model& model) {
       // of nodes (against a rigid wall, say) sees the nodes beyond the layer with weights
       // exp(-gamma (d/h)^2) that vanish at gamma = 4, and its covariance turns singular.
       r = shapeFunctionsAt(model, p, s.node, std::span<double>(s.N.data() + start[k], size),
-                           std::span<Vec3>(s.dN.data() + start[k], size), s, spacing_[p], std::pow(0.5, attempt - 1));
+                           std::span<Vec3>(s.dN.data() + start[k], size), s, spacing_[p], std::pow(0.5, i - 1));
+    };
+    double best = first_covariance;  // of the best ill-conditioned attempt so far (0: the first)
+    int best_attempt = first_covariance >= 0.0 ? 0 : -1;
+    for (int i = 1; i < 4; ++i) {
+      attempt(i);
       if (r.status == lme::Status::converged) break;
+      if (r.status == lme::Status::ill_conditioned && r.covariance > best) {
+        best = r.covariance;
+        best_attempt = i;
+      }
     }
-    s.rows.insert(s.rows.end(), s.node.begin(), s.node.begin() + n);
-    start[k + 1] = start[k] + static_cast<std::size_t>(n);
-    count_[p] = n;
     if (r.status != lme::Status::converged && points.failed(p)) {
-      // Failed material outside the hull of every neighbourhood is leaving its body: released to
-      // fly on (a zero row), with the velocity it has.
+      // Failed material outside the hull of every neighbourhood (or at its very edge) is leaving
+      // its body: released to fly on (a zero row), with the velocity it has.
       std::fill(s.N.begin() + static_cast<std::ptrdiff_t>(start[k]), s.N.end(), 0.0);
       std::fill(s.dN.begin() + static_cast<std::ptrdiff_t>(start[k]), s.dN.end(), Vec3::Zero());
       points.carrier[p] = -1;
       points.stress[p].setZero();
       points.viscous_pressure[p] = 0.0;
+    } else if (r.status != lme::Status::converged && best_attempt == 0) {
+      kept[k] = 1;  // intact, and no retry is better conditioned than the first attempt
+      s.N.resize(start[k]);
+      s.dN.resize(start[k]);
+      start[k + 1] = start[k];
       continue;
-    }
-    if (r.status != lme::Status::converged && failed == np) {
+    } else if (r.status != lme::Status::converged && best_attempt > 0) {
+      if (best_attempt != 3) attempt(best_attempt);  // intact: the best-conditioned retry
+    } else if (r.status != lme::Status::converged && failed == np) {
       failed = p;
       failure = r;
     }
+    s.rows.insert(s.rows.end(), s.node.begin(), s.node.begin() + n);
+    start[k + 1] = start[k] + static_cast<std::size_t>(n);
+    count_[p] = n;
   }
   if (failed < np) {
     const Vec3& x = points.x[failed];
@@ -271,7 +291,8 @@ void Neighbourhoods::retryFailedPoints(Model& model) {
                     points.id[failed], model.bodies[points.body[failed]].name, x[0], x[1], x[2],
                     lme::describe(failure.status), count_[failed], failure.residual, failure.iterations));
   }
-  // New rows in point order: the old rows of the points that converged, the retried ones.
+  if (std::all_of(kept.begin(), kept.end(), [](char c) { return c != 0; })) return;
+  // New rows in point order: the old rows of the points that converged or kept theirs, the retried ones.
   Connectivity rebuilt;
   rebuilt.offset.assign(static_cast<std::size_t>(np) + 1, 0);
   for (LocalIndex p = 0; p < np; ++p) rebuilt.offset[p + 1] = rebuilt.offset[p] + count_[p];
@@ -287,13 +308,13 @@ void Neighbourhoods::retryFailedPoints(Model& model) {
   std::size_t k = 0;
   for (LocalIndex p = 0; p < np; ++p) {
     const Index to = rebuilt.offset[p];
-    if (k < retry.size() && retry[k] == p) {
+    if (k < retry.size() && retry[k].first == p && !kept[k]) {
       copyRow(s.rows.data() + start[k], s.N.data() + start[k], s.dN.data() + start[k], count_[p], to);
-      ++k;
     } else {
       const Index from = conn.offset[p];
       copyRow(conn.node.data() + from, conn.N.data() + from, conn.dN.data() + from, count_[p], to);
     }
+    if (k < retry.size() && retry[k].first == p) ++k;
   }
   conn.offset = std::move(rebuilt.offset);
   conn.node = std::move(rebuilt.node);
@@ -422,7 +443,8 @@ void Neighbourhoods::update(Model& model) {
         r = shapeFunctionsAt(model, p, std::span<const LocalIndex>(row, n), std::span<double>(conn.N.data() + first, n),
                              std::span<Vec3>(conn.dN.data() + first, n), s, spacing_[p]);
       }
-      if (r.status != lme::Status::converged) s.retry.push_back(p);
+      if (r.status != lme::Status::converged)
+        s.retry.emplace_back(p, r.status == lme::Status::ill_conditioned ? r.covariance : -1.0);
     }
     const double my_shape_time = shape_watch.seconds();
 #pragma omp critical
@@ -431,7 +453,7 @@ void Neighbourhoods::update(Model& model) {
   caught_.clear();
   for (const Scratch& s : scratch_) caught_.insert(caught_.end(), s.caught.begin(), s.caught.end());
   std::sort(caught_.begin(), caught_.end());
-  retryFailedPoints(model);
+  retryPoints(model);
   if (bodies <= max_capturing_bodies) {
     std::vector<std::uint64_t> touching(bodies, 0);
     for (const Scratch& s : scratch_)

@@ -33,7 +33,9 @@ class Neighbourhoods {
     std::vector<LocalIndex> node;   // neighbours of the point being processed: visible first
     std::size_t visible = 0;        // how many of them are visible
     std::vector<LocalIndex> rows;   // neighbours of all points of this thread, in order
-    std::vector<LocalIndex> retry;  // points of this thread whose shape functions failed
+    // Points of this thread whose shape functions failed or are ill-conditioned, with the
+    // smallest variance of their first attempt (lme::Result::covariance; -1 if it failed).
+    std::vector<std::pair<LocalIndex, double>> retry;
     std::vector<double> N;          // shape functions of retried points
     std::vector<Vec3> dN;
     std::vector<std::pair<LocalIndex, double>> candidates;
@@ -73,8 +75,9 @@ class Neighbourhoods {
   // The support size of debris point p among the nodes of `body`: its own spacing, or the body's
   // mean spacing if larger.
   double debrisSpacing(LocalIndex p, int body) const;
-  // Retries the points whose shape functions failed with larger radii; throws if one still fails.
-  void retryFailedPoints(Model& model);
+  // Retries the points whose shape functions failed or are ill-conditioned with larger radii and
+  // smoother supports; throws if an intact point still fails.
+  void retryPoints(Model& model);
 
   Settings settings_;
   CellList cells_;

@@ -1,0 +1,77 @@
+// An intact point at the very edge of its nodes' hull (a point of a compressed gas pushed against a
+// symmetry plane, say): its covariance is nearly singular and its gradients, -N_a J^-1 d_a, grow as
+// the inverse. The neighbourhoods retry it with wider, smoother supports and keep the
+// best-conditioned; its gradients are then smaller than its first support's (so the test fails
+// without the retry), and still a partition of unity that reproduces a linear field.
+#include "approx/lme.hpp"
+#include "geometry/structured_mesh.hpp"
+#include "material/neo_hookean.hpp"
+#include "solver/otm/neighbourhoods.hpp"
+#include "solver/otm/setup.hpp"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace kessler::otm {
+namespace {
+
+constexpr double h = 1e-3;
+
+double largestGradient(std::span<const Vec3> dN) {
+  double largest = 0.0;
+  for (const Vec3& g : dN) largest = std::max(largest, g.norm());
+  return largest * h;
+}
+
+TEST(Conditioning, AnIntactPointAtTheEdgeOfItsHullTakesItsBestConditionedSupport) {
+  NeoHookeanParameters material;
+  material.density = 2700.0;
+  material.youngs_modulus = 70e9;
+  material.poisson_ratio = 0.33;
+  Model model;
+  addBody(model, "block", std::make_shared<NeoHookean>("al", material),
+          geometry::discretise(geometry::structuredBoxMesh(geometry::Box{Vec3::Zero(), Vec3(6 * h, 6 * h, 4 * h)}, {6, 6, 4})),
+          Vec3::Zero());
+  // The point nearest the middle of the bottom face, moved to 1e-4 h above it.
+  PointStore& points = model.points;
+  LocalIndex p = 0;
+  for (LocalIndex q = 1; q < points.owned; ++q)
+    if ((points.x[q] - Vec3(3 * h, 3 * h, 0)).norm() < (points.x[p] - Vec3(3 * h, 3 * h, 0)).norm()) p = q;
+  points.x[p] = Vec3(points.x[p][0], points.x[p][1], 1e-4 * h);
+
+  // Its first support, as the neighbourhoods build it: the nodes within the cut-off at gamma.
+  const Settings settings;
+  const double spacing = points.spacing(p);
+  const double cutoff = lme::cutoffRadius(settings.lme_gamma, spacing, settings.lme_tolerance);
+  std::vector<Vec3> d;
+  for (LocalIndex a = 0; a < model.nodes.size(); ++a)
+    if ((points.x[p] - model.nodes.x[a]).norm() <= cutoff) d.push_back(points.x[p] - model.nodes.x[a]);
+  ASSERT_GE(static_cast<int>(d.size()), settings.min_neighbours);
+  std::vector<double> N(d.size());
+  std::vector<Vec3> dN(d.size());
+  Vec3 lambda = Vec3::Zero();
+  const lme::Result first = lme::shapeFunctions(d, lme::beta(settings.lme_gamma, spacing), spacing, lambda, N, dN, true);
+  ASSERT_EQ(first.status, lme::Status::ill_conditioned);
+  const double first_gradient = largestGradient(dN);
+
+  Neighbourhoods(settings).update(model);
+  const Connectivity& conn = model.connectivity;
+  const auto row = static_cast<std::size_t>(conn.offset[p + 1] - conn.offset[p]);
+  const std::span<const Vec3> gradients(conn.dN.data() + conn.offset[p], row);
+  EXPECT_LT(largestGradient(gradients), 0.5 * first_gradient);
+  double sum = 0.0;
+  Vec3 position = Vec3::Zero();
+  Mat3 identity = Mat3::Zero();
+  for (Index k = conn.offset[p]; k < conn.offset[p + 1]; ++k) {
+    sum += conn.N[k];
+    position += conn.N[k] * model.nodes.x[conn.node[k]];
+    identity += model.nodes.x[conn.node[k]] * conn.dN[k].transpose();
+  }
+  EXPECT_NEAR(sum, 1.0, 1e-9);
+  EXPECT_LT((position - points.x[p]).norm(), 1e-9 * h);
+  EXPECT_LT((identity - Mat3::Identity()).norm(), 1e-6);
+}
+
+}  // namespace
+}  // namespace kessler::otm
