@@ -274,7 +274,8 @@ void Integrator::heatPoints(const std::vector<double>& heat) {
     if (end > begin)
       model_.materials[body.material]->heat(
           points, begin, end,
-          std::span<const double>(heat).subspan(static_cast<std::size_t>(begin), static_cast<std::size_t>(end - begin)));
+          std::span<const double>(heat).subspan(static_cast<std::size_t>(begin),
+                                                static_cast<std::size_t>(end - begin)));
   }
 }
 

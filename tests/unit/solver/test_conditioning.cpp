@@ -4,10 +4,8 @@
 // best-conditioned; its gradients are then smaller than its first support's (so the test fails
 // without the retry), and still a partition of unity that reproduces a linear field.
 #include "approx/lme.hpp"
-#include "geometry/structured_mesh.hpp"
-#include "material/neo_hookean.hpp"
+#include "elastic_block.hpp"
 #include "solver/otm/neighbourhoods.hpp"
-#include "solver/otm/setup.hpp"
 
 #include <gtest/gtest.h>
 
@@ -25,14 +23,8 @@ double largestGradient(std::span<const Vec3> dN) {
 }
 
 TEST(Conditioning, AnIntactPointAtTheEdgeOfItsHullTakesItsBestConditionedSupport) {
-  NeoHookeanParameters material;
-  material.density = 2700.0;
-  material.youngs_modulus = 70e9;
-  material.poisson_ratio = 0.33;
   Model model;
-  addBody(model, "block", std::make_shared<NeoHookean>("al", material),
-          geometry::discretise(geometry::structuredBoxMesh(geometry::Box{Vec3::Zero(), Vec3(6 * h, 6 * h, 4 * h)}, {6, 6, 4})),
-          Vec3::Zero());
+  addElasticBlock(model, "block", geometry::Box{Vec3::Zero(), Vec3(6 * h, 6 * h, 4 * h)}, {6, 6, 4});
   // The point nearest the middle of the bottom face, moved to 1e-4 h above it.
   PointStore& points = model.points;
   LocalIndex p = 0;
@@ -51,7 +43,8 @@ TEST(Conditioning, AnIntactPointAtTheEdgeOfItsHullTakesItsBestConditionedSupport
   std::vector<double> N(d.size());
   std::vector<Vec3> dN(d.size());
   Vec3 lambda = Vec3::Zero();
-  const lme::Result first = lme::shapeFunctions(d, lme::beta(settings.lme_gamma, spacing), spacing, lambda, N, dN, true);
+  const lme::Result first =
+      lme::shapeFunctions(d, lme::beta(settings.lme_gamma, spacing), spacing, lambda, N, dN, true);
   ASSERT_EQ(first.status, lme::Status::ill_conditioned);
   const double first_gradient = largestGradient(dN);
 

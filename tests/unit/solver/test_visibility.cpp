@@ -2,10 +2,8 @@
 // has eroded, no intact point on one side keeps a node on the far side of the band, and the
 // shape functions stay a partition of unity; without the band such connections exist (so the
 // test can fail).
-#include "geometry/structured_mesh.hpp"
-#include "material/neo_hookean.hpp"
+#include "elastic_block.hpp"
 #include "solver/otm/neighbourhoods.hpp"
-#include "solver/otm/setup.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,15 +15,8 @@ namespace {
 constexpr double h = 1e-3;
 
 Model plate() {
-  NeoHookeanParameters p;
-  p.density = 2700.0;
-  p.youngs_modulus = 70e9;
-  p.poisson_ratio = 0.33;
   Model model;
-  addBody(model, "plate", std::make_shared<NeoHookean>("al", p),
-          geometry::discretise(
-              geometry::structuredBoxMesh(geometry::Box{Vec3(0, -4 * h, 0), Vec3(8 * h, 4 * h, 2 * h)}, {8, 8, 2})),
-          Vec3::Zero());
+  addElasticBlock(model, "plate", geometry::Box{Vec3(0, -4 * h, 0), Vec3(8 * h, 4 * h, 2 * h)}, {8, 8, 2});
   return model;
 }
 
