@@ -234,7 +234,10 @@ void Neighbourhoods::retryPoints(Model& model) {
   LocalIndex failed = np;
   lme::Result failure;
   for (std::size_t k = 0; k < retry.size(); ++k) {
-    const auto [p, first_covariance] = retry[k];
+    // Plain names, not a structured binding: the lambda below captures them (C++20 allows it, clang 14
+    // does not).
+    const LocalIndex p = retry[k].first;
+    const double first_covariance = retry[k].second;
     lme::Result r;
     int n = 0;
     auto attempt = [&](int i) {
