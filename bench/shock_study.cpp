@@ -3,7 +3,8 @@
 // unstructured points) at the mesh sizes given in mm, with its plateau measurements and, with
 // `--profile`, the target's slab profile at the end. Options first: `--two-bodies` (a flyer onto a target
 // instead of one slab whose halves meet), `--no-volume-averaging`,
-// `--stabilisation A` (Settings::volume_stabilisation), `--contact-distance D`, `--cfl X`. Not a test.
+// `--stabilisation A` (Settings::volume_stabilisation), `--contact-distance D`, `--cfl X`, `--noh-end T`
+// (the Noh problem's end time, 0.6 by default; the shock is then at T/3). Not a test.
 #include "core/error.hpp"
 #include "verify/impact_problems.hpp"
 
@@ -16,6 +17,7 @@
 int main(int argc, char** argv) {
   kessler::otm::Settings settings;
   bool profile = false, one_body = true, noh = false;
+  double noh_end = 0.6;
   int first = 1;
   for (; first < argc; ++first) {
     const std::string option = argv[first];
@@ -23,6 +25,8 @@ int main(int argc, char** argv) {
       profile = true;
     } else if (option == "--noh") {
       noh = true;
+    } else if (option == "--noh-end" && first + 1 < argc) {
+      noh_end = std::atof(argv[++first]);
     } else if (option == "--two-bodies") {
       one_body = false;
     } else if (option == "--no-volume-averaging") {
@@ -41,7 +45,7 @@ int main(int argc, char** argv) {
     const double mesh = std::atof(argv[i]);
     kessler::verify::NohResult r;
     try {
-      r = kessler::verify::runNoh3d(mesh, settings);
+      r = kessler::verify::runNoh3d(mesh, settings, noh_end);
     } catch (const kessler::NumericalError& e) {
       fmt::print("Noh, mesh {}: stopped: {}\n", mesh, e.what());
       continue;

@@ -77,7 +77,7 @@ struct NohResult {
 
 // mesh_size: the Gmsh target edge length of the unit sphere; settings: the solver's (end_time is set
 // here).
-NohResult runNoh3d(double mesh_size, otm::Settings settings = {});
+NohResult runNoh3d(double mesh_size, otm::Settings settings = {}, double end_time = 0.6);
 Outcome noh3d();
 
 // mesh_size: the Gmsh target edge length, m; settings: the solver's (end_time is set here);

@@ -21,11 +21,11 @@ namespace kessler::verify {
 
 namespace {
 
-constexpr double gamma_gas = 5.0 / 3.0, end_time = 0.6;
+constexpr double gamma_gas = 5.0 / 3.0;
 
 }  // namespace
 
-NohResult runNoh3d(double mesh_size, otm::Settings settings) {
+NohResult runNoh3d(double mesh_size, otm::Settings settings, double end_time) {
   otm::BodySetup ball;
   ball.name = "gas";
   ball.material = std::make_shared<ImpactMaterial>("ideal-gas-5/3", library::find("ideal-gas-5/3").parameters);
@@ -53,9 +53,9 @@ NohResult runNoh3d(double mesh_size, otm::Settings settings) {
   r.reference_shock_radius = 0.5 * (gamma_gas - 1.0) * end_time;
   const double rs = r.reference_shock_radius;
   double m = 0.0, volume = 0.0, m_centre = 0.0, volume_centre = 0.0;
-  // Shells of r_s / 40 for the front and the profile.
+  // Shells of r_s / 40 (at t = 0.6; 0.005 wide before) for the front and the profile.
   const int shells = 80;
-  const double dr = 2.0 * rs / shells;
+  const double dr = std::max(2.0 * rs, 0.4) / shells;  // out to 0.4 at least, as at t = 0.6
   std::vector<double> shell_mass(shells, 0.0), shell_volume(shells, 0.0), shell_momentum(shells, 0.0),
       shell_energy(shells, 0.0);
   const PointStore& points = model.points;
