@@ -87,13 +87,21 @@ void checkGeometry(const otm::Model& model, const ImpactGeometry& geometry) {
   }
 }
 
-double holeCell(const otm::Model& model, const ImpactGeometry& geometry, int plate) {
-  if (geometry.cell_size > 0.0) return geometry.cell_size;
-  const BodyInfo& body = bodyOf(model, geometry.plates[plate]);
+namespace {
+
+// The mean initial spacing of a plate's points.
+double meanSpacing(const otm::Model& model, const PlateSpec& plate) {
+  const BodyInfo& body = bodyOf(model, plate);
   KESSLER_VERIFY(body.point_end > body.point_begin, "plate '{}' has no points", body.name);
   double sum = 0.0;
   for (LocalIndex p = body.point_begin; p < body.point_end; ++p) sum += model.points.spacing0[p];
   return sum / (body.point_end - body.point_begin);
+}
+
+}  // namespace
+
+double holeCell(const otm::Model& model, const ImpactGeometry& geometry, int plate) {
+  return geometry.cell_size > 0.0 ? geometry.cell_size : meanSpacing(model, geometry.plates[plate]);
 }
 
 HoleMeasurement measureHole(const otm::Model& model, const ImpactGeometry& geometry, int plate_index) {
@@ -143,6 +151,7 @@ RearWallDamage measureRearWall(const otm::Model& model, const FragmentSet& fragm
   RearWallDamage damage;
   damage.plate = wall_index;
   damage.body = plate.body;
+  damage.spacings_through = plate.thickness / meanSpacing(model, plate);
 
   for (LocalIndex p = 0; p < model.points.owned; ++p)
     if (model.points.debris(p) && model.points.carrier[p] == plate.body)

@@ -118,6 +118,10 @@ struct RearWallDamage {
   double debris_carried = 0.0;                // kg of debris the wall has caught and still carries
   double bulge = 0.0;           // m, how far the wall's attached material reaches behind its original rear face
   double incipient_mass = 0.0;  // kg of failed wall material in the rear half of the wall, still attached
+  // The wall's thickness over its points' mean initial spacing: how finely its response is
+  // resolved. The shipped whipple wall (1.6) held against a sphere that perforated it at 3.0
+  // (docs/validation.md, "The open problem").
+  double spacings_through = 0.0;
   // The NASA damage classes (docs/analysis.md §7), worst first: perforation | detached_spall |
   // incipient_spall | bulge | none. The first two are failures.
   std::string classification = "none";

@@ -155,6 +155,7 @@ nlohmann::json toJson(const Report& r) {
                         {"debris_carried_kg", w.debris_carried},
                         {"bulge_m", w.bulge},
                         {"incipient_spall_mass_kg", w.incipient_mass},
+                        {"spacings_through_thickness", w.spacings_through},
                         {"classification", w.classification},
                         {"failed", w.failed()}};
   }

@@ -121,6 +121,10 @@ TEST(Hole, BulgeLeavesTheSlabButIsNotThrough) {
   EXPECT_FALSE(wall.failed());
   // The rear face's points start a fraction of a spacing inside it.
   EXPECT_NEAR(wall.bulge, 3 * mm, measureHole(m.model, m.geometry, 0).cell);
+  // 2 mm over the mean edge of a 0.5 mm cube's Kuhn tets: three edges of 0.5 mm, two face
+  // diagonals and a body diagonal.
+  const double mean_edge = 0.5 * mm * (3.0 + 2.0 * std::sqrt(2.0) + std::sqrt(3.0)) / 6.0;
+  EXPECT_NEAR(wall.spacings_through, 2 * mm / mean_edge, 1e-9);
 }
 
 TEST(RearWall, FailedMaterialNearTheRearFaceIsIncipientSpallNearTheFrontACrater) {
