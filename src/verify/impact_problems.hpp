@@ -72,11 +72,11 @@ struct NohResult {
   double initial_energy = 0.0;  // kinetic, J
   double energy_error = 0.0;    // relative change of the total energy over the run
   long steps = 0, points = 0;
-  std::vector<Shell> profile;  // shells of r_s/40 out to 2 r_s at the end
+  std::vector<Shell> profile;  // 80 shells out to 2 r_s or r = 0.4, whichever is further, at the end
 };
 
-// mesh_size: the Gmsh target edge length of the unit sphere; settings: the solver's (end_time is set
-// here).
+// mesh_size: the Gmsh target edge length of the unit sphere; settings: the solver's (its end_time is
+// replaced by end_time, when the problem is measured: the shock is then at end_time / 3).
 NohResult runNoh3d(double mesh_size, otm::Settings settings = {}, double end_time = 0.6);
 Outcome noh3d();
 

@@ -53,9 +53,10 @@ NohResult runNoh3d(double mesh_size, otm::Settings settings, double end_time) {
   r.reference_shock_radius = 0.5 * (gamma_gas - 1.0) * end_time;
   const double rs = r.reference_shock_radius;
   double m = 0.0, volume = 0.0, m_centre = 0.0, volume_centre = 0.0;
-  // Shells of r_s / 40 (at t = 0.6; 0.005 wide before) for the front and the profile.
+  // 80 shells for the front and the profile, out to 2 r_s or r = 0.4, whichever is further: r_s / 40
+  // wide at t = 0.6, 0.005 wide at any earlier time (the start-up, seen with the shock study's --noh-end).
   const int shells = 80;
-  const double dr = std::max(2.0 * rs, 0.4) / shells;  // out to 0.4 at least, as at t = 0.6
+  const double dr = std::max(2.0 * rs, 0.4) / shells;
   std::vector<double> shell_mass(shells, 0.0), shell_volume(shells, 0.0), shell_momentum(shells, 0.0),
       shell_energy(shells, 0.0);
   const PointStore& points = model.points;
