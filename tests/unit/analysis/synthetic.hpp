@@ -1,6 +1,7 @@
 #pragma once
 // Synthetic models for the analysis tests: structured blocks and hand-placed points, with an
 // elastic aluminium (the analysis reads masses, positions and flags only).
+#include "../blocks.hpp"
 #include "geometry/mesh.hpp"
 #include "geometry/structured_mesh.hpp"
 #include "material/neo_hookean.hpp"
@@ -14,29 +15,8 @@
 
 namespace kessler::analysis::testing {
 
-// An aluminium-like elastic material (the analysis reads only the reference density and the
-// name; an existing law keeps the tests independent of the Material interface's evolution).
-inline MaterialPtr aluminium() {
-  static const MaterialPtr material = [] {
-    NeoHookeanParameters p;
-    p.density = 2700.0;
-    p.youngs_modulus = 68.9e9;
-    p.poisson_ratio = 0.33;
-    return std::make_shared<NeoHookean>("al", p);
-  }();
-  return material;
-}
-
-// A box body meshed by the structured Kuhn triangulation (six tets per cube).
-inline int addBlock(otm::Model& model, const std::string& name, const geometry::Box& box,
-                    const std::array<int, 3>& cells, const MaterialPtr& material = aluminium(),
-                    const Vec3& velocity = Vec3::Zero()) {
-  const geometry::Discretisation d = geometry::discretise(geometry::structuredBoxMesh(box, cells));
-  const int body = otm::addBody(model, name, material, d, velocity);
-  model.points.owned = model.points.size();
-  model.nodes.owned = model.nodes.size();
-  return body;
-}
+using kessler::testing::addBlock;
+using kessler::testing::aluminium;
 
 // A body of hand-placed points, each of volume `volume`, without links.
 inline int addCloud(otm::Model& model, const std::string& name, const std::vector<Vec3>& positions, double volume,

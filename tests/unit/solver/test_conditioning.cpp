@@ -4,7 +4,7 @@
 // best-conditioned; its gradients are then smaller than its first support's (so the test fails
 // without the retry), and still a partition of unity that reproduces a linear field.
 #include "approx/lme.hpp"
-#include "elastic_block.hpp"
+#include "../blocks.hpp"
 #include "solver/otm/neighbourhoods.hpp"
 
 #include <gtest/gtest.h>
@@ -24,7 +24,7 @@ double largestGradient(std::span<const Vec3> dN) {
 
 TEST(Conditioning, AnIntactPointAtTheEdgeOfItsHullTakesItsBestConditionedSupport) {
   Model model;
-  addElasticBlock(model, "block", geometry::Box{Vec3::Zero(), Vec3(6 * h, 6 * h, 4 * h)}, {6, 6, 4});
+  testing::addBlock(model, "block", geometry::Box{Vec3::Zero(), Vec3(6 * h, 6 * h, 4 * h)}, {6, 6, 4});
   // The point nearest the middle of the bottom face, moved to 1e-4 h above it.
   PointStore& points = model.points;
   LocalIndex p = 0;

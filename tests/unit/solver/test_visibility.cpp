@@ -2,7 +2,7 @@
 // has eroded, no intact point on one side keeps a node on the far side of the band, and the
 // shape functions stay a partition of unity; without the band such connections exist (so the
 // test can fail).
-#include "elastic_block.hpp"
+#include "../blocks.hpp"
 #include "solver/otm/neighbourhoods.hpp"
 
 #include <gtest/gtest.h>
@@ -16,7 +16,7 @@ constexpr double h = 1e-3;
 
 Model plate() {
   Model model;
-  addElasticBlock(model, "plate", geometry::Box{Vec3(0, -4 * h, 0), Vec3(8 * h, 4 * h, 2 * h)}, {8, 8, 2});
+  testing::addBlock(model, "plate", geometry::Box{Vec3(0, -4 * h, 0), Vec3(8 * h, 4 * h, 2 * h)}, {8, 8, 2});
   return model;
 }
 
