@@ -3,8 +3,9 @@
 // unstructured points) at the mesh sizes given in mm, with its plateau measurements and, with
 // `--profile`, the target's slab profile at the end. Options first: `--two-bodies` (a flyer onto a target
 // instead of one slab whose halves meet), `--no-volume-averaging`,
-// `--stabilisation A` (Settings::volume_stabilisation), `--contact-distance D`, `--cfl X`, `--noh-end T`
-// (the Noh problem's end time, 0.6 by default; the shock is then at T/3). Not a test.
+// `--stabilisation A` (Settings::volume_stabilisation), `--relaxation K` (Settings::volume_relaxation),
+// `--contact-distance D`, `--cfl X`, `--noh-end T` (the Noh problem's end time, 0.6 by default; the
+// shock is then at T/3). Not a test.
 #include "core/error.hpp"
 #include "verify/impact_problems.hpp"
 
@@ -33,6 +34,8 @@ int main(int argc, char** argv) {
       settings.volume_averaging = false;
     } else if (option == "--stabilisation" && first + 1 < argc) {
       settings.volume_stabilisation = std::atof(argv[++first]);
+    } else if (option == "--relaxation" && first + 1 < argc) {
+      settings.volume_relaxation = std::atof(argv[++first]);
     } else if (option == "--contact-distance" && first + 1 < argc) {
       settings.contact_distance = std::atof(argv[++first]);
     } else if (option == "--cfl" && first + 1 < argc) {

@@ -1,8 +1,8 @@
 // The nodal patch of the volume change (solver/otm/volume_patch.hpp, docs/theory.md §4-5): the
 // limiter takes the quadratic viscosity off a smooth compression and leaves it on a shock; volume
 // averaging with its stabilisation keeps a body at rest bitwise at rest, conserves momentum through
-// a collision and books the stabilisation's stored energy; a cold gas gets a time step from the
-// volume-change bound.
+// a collision and books the stabilisation's stored energy, as the defect relaxes and as the
+// stiffness changes; a cold gas gets a time step from the volume-change bound.
 #include "core/error.hpp"
 #include "geometry/structured_mesh.hpp"
 #include "material/impact_material.hpp"
@@ -59,7 +59,7 @@ std::vector<double> limiterAfter(const std::function<Vec3(const Vec3&)>& displac
     j[p] = dF.determinant();
   }
   VolumePatch patch;
-  patch.apply(conn, model.nodes.owned, true, 1.0, points, j);
+  patch.apply(conn, model.nodes.owned, true, 1.0, 0.0, 0.0, points, j);
   std::vector<double> phi;
   for (LocalIndex p = 0; p < points.owned; ++p) {
     const Vec3& x = points.x[p];
@@ -106,6 +106,50 @@ TEST(VolumeStabilisation, ABodyAtRestStaysBitwiseAtRest) {
   for (LocalIndex a = 0; a < model.nodes.size(); ++a)
     EXPECT_EQ(model.nodes.x[a], x0[static_cast<std::size_t>(model.nodes.id[a])]);
   for (LocalIndex p = 0; p < model.points.owned; ++p) EXPECT_EQ(model.points.volume_defect[p], 0.0);
+}
+
+TEST(VolumeStabilisation, StoredEnergyFollowsTheRelaxationAndTheStiffness) {
+  // A block at rest with a uniform defect d0 and no volume change over the step: after one step dt
+  // with relaxation k, each point's defect is d0 exp(-dt c / (k h)), and the work booked is minus the
+  // stored energy freed, alpha m c^2 (d0^2 - d^2) / 2 per point (S = -alpha rho c^2 d).
+  Model model;
+  addBody(model, "block", aluminium(), box(Vec3::Zero(), Vec3(4e-3, 4e-3, 4e-3), {4, 4, 4}), Vec3::Zero());
+  Settings settings;
+  settings.end_time = 1.0;
+  Integrator integrator(model, settings);
+  integrator.initialise();
+  PointStore& points = model.points;
+  const double d0 = -2e-3, alpha = 1.0, k = 10.0, dt = 1e-8;
+  std::vector<double> j(static_cast<std::size_t>(points.owned), 1.0);
+  for (LocalIndex p = 0; p < points.owned; ++p) {
+    points.volume_defect[p] = d0;
+    points.dF[p].setIdentity();
+  }
+  VolumePatch patch;
+  const double work = patch.apply(model.connectivity, model.nodes.owned, true, alpha, k, dt, points, j);
+  double freed = 0.0;
+  for (LocalIndex p = 0; p < points.owned; ++p) {
+    const double c = points.sound_speed[p], h = points.spacing(p);
+    ASSERT_GT(c, 0.0);
+    const double d = d0 * std::exp(-dt * c / (k * h));
+    EXPECT_NEAR(points.volume_defect[p], d, 1e-12 * std::abs(d0));
+    EXPECT_LT(std::abs(points.volume_defect[p]), std::abs(d0));
+    freed += 0.5 * alpha * points.mass[p] * c * c * (d0 * d0 - d * d);
+  }
+  EXPECT_GT(freed, 0.0);
+  EXPECT_NEAR(work, -freed, 1e-9 * freed);
+  // The material update doubles every signal speed at the same defect: the stored energy
+  // alpha m c^2 d^2 / 2 grows fourfold, and closeStep() books the growth (taken from the heat).
+  double growth = 0.0;
+  for (LocalIndex p = 0; p < points.owned; ++p) {
+    const double c = points.sound_speed[p], d = points.volume_defect[p];
+    growth += 0.5 * alpha * points.mass[p] * d * d * 3.0 * c * c;
+    points.sound_speed[p] = 2.0 * c;
+  }
+  EXPECT_NEAR(patch.closeStep(points, alpha), growth, 1e-9 * growth);
+  double heat = 0.0;
+  for (double q : patch.released()) heat += q;
+  EXPECT_NEAR(heat, freed - growth, 1e-9 * growth);
 }
 
 // A block strikes a plate obliquely at 2 km/s for 0.5 us, with or without volume averaging, with
