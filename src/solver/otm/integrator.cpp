@@ -256,16 +256,14 @@ void Integrator::updatePoints() {
 // so that kinetic, internal and stabilisation energy balance step by step (docs/theory.md §4 step 5).
 // Intact points only: the forces of failed material (compression only) also carry a seizing
 // contact's inelastic merge, which given to them as heat made a few contact points 20,000 K hot;
-// that loss stays unbooked (the energy error of an impact); they take only the stored energy their
-// relaxing volume defect freed (VolumePatch::released). Points of a law without a thermal state
+// that loss stays unbooked (the energy error of an impact). Points of a law without a thermal state
 // take none (Material::heat).
 void Integrator::balanceEnergy() {
   PointStore& points = model_.points;
-  const std::vector<double>& stored = patch_.work();  // apply() sizes both every step
-  const std::vector<double>& released = patch_.released();
+  const std::vector<double>& stored = patch_.work();  // apply() sizes it every step
 #pragma omp parallel for schedule(static)
   for (LocalIndex p = 0; p < points.owned; ++p)
-    transfer_heat_[p] = points.eroded[p] ? released[p] : force_work_[p] - stored[p] - points.mass[p] * points.energy[p];
+    transfer_heat_[p] = points.eroded[p] ? 0.0 : force_work_[p] - stored[p] - points.mass[p] * points.energy[p];
   heatPoints(transfer_heat_);
 }
 

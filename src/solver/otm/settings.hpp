@@ -45,12 +45,10 @@ struct Settings {
   // one, while the state the material sees (density, pressure, heating) stays the patch average
   // (docs/theory.md §4).
   double volume_stabilisation = 1.0;
-  // With k > 0 the defect relaxes with the time constant of k wave transits of the point's spacing,
-  // tau = k h / c, the energy it stored becomes heat, and the stored energy follows the stiffness
-  // (docs/theory.md §4). Off (0): at k = 10 Johnson-Cook damage runs on sphere-plate and hugoniot-3d
-  // and the Taylor bar improve, but sphere-plate's peak shocked pressure at 0.2 us rises from 99 to
-  // 119 GPa (docs/validation.md, "A defect that forgets"). A study lever, not a deck key.
-  double volume_relaxation = 0.0;
+  // The defect of an intact point relaxes with the time constant of this many wave transits of its
+  // spacing, tau = k h / c (0: never), the energy it stored becomes heat, and the stored energy
+  // follows the stiffness (docs/theory.md §4).
+  double volume_relaxation = 10.0;
   // Visibility across cracks (docs/theory.md §8): a point does not take nodes of its own body that
   // lie behind eroded material, so crack faces separate. Needed for brittle crack growth
   // (`griffith` converges with it, diverges without); off by default because with the scattered

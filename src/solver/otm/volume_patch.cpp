@@ -22,7 +22,7 @@ double stabilisationPressure(const PointStore& points, LocalIndex p, double alph
 // The defect relaxes as exp(-t c / (k h)), over k transits of a wave across the point's spacing h
 // (docs/theory.md §4): the stabilisation resists a mode that builds up over many steps, not a
 // volume change the patch has kept for k transits. The energy the relaxed defect stored, -S V d / 2
-// before less after (S linear in d, or 0 for a failed point in tension), is released as heat.
+// before less after, is released (the compatible energy update makes it the point's heat).
 double VolumePatch::relax(PointStore& points, LocalIndex p, double alpha, double dt_per_transits) {
   double& defect = points.volume_defect[p];
   const double h = points.spacing(p);
@@ -37,7 +37,6 @@ double VolumePatch::apply(const Connectivity& conn, LocalIndex owned_nodes, bool
                           double relaxation, double dt, PointStore& points, std::vector<double>& j) {
   work_.assign(static_cast<std::size_t>(points.owned), 0.0);
   defect_step_.assign(static_cast<std::size_t>(points.owned), 0.0);
-  released_.assign(static_cast<std::size_t>(points.owned), 0.0);
   signal2_.assign(static_cast<std::size_t>(points.owned), 0.0);
   rebook_ = averaging && alpha > 0.0 && relaxation > 0.0;
   node_.resize(static_cast<std::size_t>(owned_nodes));
@@ -101,10 +100,9 @@ double VolumePatch::apply(const Connectivity& conn, LocalIndex owned_nodes, bool
     // energy sees it; here the first half, closeStep() the second.
     const double defect_step = points.dF[p].trace() - 3.0 - average_trace;
     defect_step_[p] = defect_step;
-    if (alpha > 0.0 && relaxation > 0.0) {
-      released_[p] = relax(points, p, alpha, dt / relaxation);
-      work_[p] = -released_[p];
-    }
+    // Intact points only: a failed point's compression-only stabilisation keeps the debris at a
+    // contact from overcompressing (docs/theory.md §4), and relaxed it let them heat and overshoot.
+    if (alpha > 0.0 && relaxation > 0.0 && !points.eroded[p]) work_[p] = -relax(points, p, alpha, dt / relaxation);
     if (alpha > 0.0) work_[p] += -0.5 * stabilisationPressure(points, p, alpha) * points.volume[p] * defect_step;
     points.volume_defect[p] += defect_step;
     signal2_[p] = points.sound_speed[p] * points.sound_speed[p];
@@ -121,15 +119,13 @@ double VolumePatch::closeStep(const PointStore& points, double alpha) {
     double second = -0.5 * stabilisationPressure(points, p, alpha) * points.volume[p] * defect_step_[p];
     // The material update changed the stiffness alpha m c^2 under the defect it stores: the stored
     // energy -S V d / 2 = alpha m c^2 d^2 / 2 changes by alpha m d^2 (c_new^2 - c_old^2) / 2, which
-    // is booked as stored and taken from the point's heat (released() goes negative). Unbooked, a
+    // is booked as stored and so taken from the point's heat (the compatible energy update). Unbooked, a
     // point heated at a fixed defect gives back more than it stored (docs/theory.md §4). With the
     // relaxation only: alone it takes hugoniot-3d from P -2.79% to -3.00% (docs/validation.md).
     const double d = points.volume_defect[p];
-    if (rebook_ && signal2_[p] > 0.0 && (!points.eroded[p] || d < 0.0)) {
+    if (rebook_ && signal2_[p] > 0.0 && !points.eroded[p]) {
       const double c = points.sound_speed[p];
-      const double change = 0.5 * alpha * points.mass[p] * d * d * (c * c - signal2_[p]);
-      second += change;
-      released_[p] -= change;
+      second += 0.5 * alpha * points.mass[p] * d * d * (c * c - signal2_[p]);
     }
     work_[p] += second;
     return second;

@@ -23,21 +23,18 @@ class VolumePatch {
   // the work the stabilisation pressure (factor `alpha`) did over the step on what the averaging took
   // away, at the pressure before the step (closeStep() adds the second): energy the stabilisation
   // stores, kept apart from the material's so that it does not heat it.
-  // With `relaxation` k > 0 the defect first relaxes over the step `dt` with the time constant of k
-  // wave transits of the point's spacing; the stored energy that frees is booked as negative work
-  // (the compatible energy update gives it to the point as heat).
+  // With `relaxation` k > 0 the defect of an intact point first relaxes over the step `dt` with the
+  // time constant of k wave transits of the point's spacing; the stored energy that frees is booked
+  // as negative work (the compatible energy update gives it to the point as heat).
   double apply(const Connectivity& conn, LocalIndex owned_nodes, bool averaging, double alpha, double relaxation,
                double dt, PointStore& points, std::vector<double>& j);
   // The rest of the step's stabilisation work, with the pressure after the material update (the one
   // the next step's forces carry): apply() books the step's defect at the old pressure's half. With
-  // the relaxation on, also the change of the stored energy that the update's new signal speed made
-  // at the same defect. Afterwards work() holds each point's whole share of the step.
+  // the relaxation on, also the change of an intact point's stored energy that the update's new
+  // signal speed made at the same defect. Afterwards work() holds each point's whole share of the step.
   double closeStep(const PointStore& points, double alpha);
   // Per point, the stabilisation's work of the last step, J (both halves once closeStep() has run).
   const std::vector<double>& work() const { return work_; }
-  // Per point, the stored energy freed over the step by the relaxation less what the new signal
-  // speed added, J: the heat the stabilisation gives the point (minus its share of work()).
-  const std::vector<double>& released() const { return released_; }
 
   // The stabilisation pressure of every owned point (0 for debris) in `s`, for the nodal forces: each
   // point's forces carry its own stress plus this pressure (docs/theory.md §4).
@@ -54,7 +51,6 @@ class VolumePatch {
   std::vector<std::array<double, 2>> node_;
   std::vector<double> work_;         // per point, the stabilisation's work of the step
   std::vector<double> defect_step_;  // per point, the step's growth of the volume defect
-  std::vector<double> released_;     // per point, released()
   std::vector<double> signal2_;      // per point, c^2 under which apply() booked the step's stored energy
   bool rebook_ = false;              // closeStep() books the stiffness's change (with the relaxation only)
 };

@@ -147,9 +147,6 @@ TEST(VolumeStabilisation, StoredEnergyFollowsTheRelaxationAndTheStiffness) {
     points.sound_speed[p] = 2.0 * c;
   }
   EXPECT_NEAR(patch.closeStep(points, alpha), growth, 1e-9 * growth);
-  double heat = 0.0;
-  for (double q : patch.released()) heat += q;
-  EXPECT_NEAR(heat, freed - growth, 1e-9 * growth);
 }
 
 // A block strikes a plate obliquely at 2 km/s for 0.5 us, with or without volume averaging, with
