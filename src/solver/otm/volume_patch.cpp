@@ -118,10 +118,10 @@ double VolumePatch::closeStep(const PointStore& points, double alpha) {
     if (points.debris(p)) return 0.0;
     double second = -0.5 * stabilisationPressure(points, p, alpha) * points.volume[p] * defect_step_[p];
     // The material update changed the stiffness alpha m c^2 under the defect it stores: the stored
-    // energy -S V d / 2 = alpha m c^2 d^2 / 2 changes by alpha m d^2 (c_new^2 - c_old^2) / 2, which
-    // is booked as stored and so taken from the point's heat (the compatible energy update). Unbooked, a
-    // point heated at a fixed defect gives back more than it stored (docs/theory.md §4). With the
-    // relaxation only: alone it takes hugoniot-3d from P -2.79% to -3.00% (docs/validation.md).
+    // energy -S V d / 2 = alpha m c^2 d^2 / 2 changes by alpha m d^2 (c_new^2 - c_old^2) / 2, booked
+    // as stored and so taken from the point's heat (the compatible energy update). Unbooked, a point
+    // heated at a fixed defect gives back more than it stored (docs/theory.md §4). Only with the
+    // relaxation: alone it takes hugoniot-3d from P -2.79% to -3.00% (docs/validation.md).
     const double d = points.volume_defect[p];
     if (rebook_ && signal2_[p] > 0.0 && !points.eroded[p]) {
       const double c = points.sound_speed[p];
