@@ -39,15 +39,23 @@ TEST(ChristensenLimiter, OneForALinearFieldZeroAtAnExtremum) {
   EXPECT_DOUBLE_EQ(christensenLimiter(0.3, -0.5), 0.0);  // a neighbour expands
 }
 
-// The nodes of a block moved by a displacement field over one step of length dt; returns the
-// points' limiter after the step.
-std::vector<double> limiterAfter(const std::function<Vec3(const Vec3&)>& displacement) {
+// An aluminium cube at rest, `cells` cells of 1 mm a side, as an integrator leaves it initialised
+// (connectivity, sound speeds).
+Model restingBlock(int cells) {
   Model model;
-  addBody(model, "block", aluminium(), box(Vec3::Zero(), Vec3(8e-3, 8e-3, 8e-3), {8, 8, 8}), Vec3::Zero());
+  const double edge = 1e-3 * cells;
+  addBody(model, "block", aluminium(), box(Vec3::Zero(), Vec3(edge, edge, edge), {cells, cells, cells}), Vec3::Zero());
   Settings settings;
   settings.end_time = 1.0;
   Integrator integrator(model, settings);
   integrator.initialise();
+  return model;
+}
+
+// The nodes of a block moved by a displacement field over one step of length dt; returns the
+// points' limiter after the step.
+std::vector<double> limiterAfter(const std::function<Vec3(const Vec3&)>& displacement) {
+  Model model = restingBlock(8);
   const Connectivity& conn = model.connectivity;
   PointStore& points = model.points;
   std::vector<double> j(static_cast<std::size_t>(points.owned));
@@ -113,12 +121,7 @@ TEST(VolumeStabilisation, StoredEnergyFollowsTheRelaxationAndTheStiffness) {
   // with relaxation k, each point's defect is d0 exp(-dt c / (k h)), and the work booked is minus the
   // stored energy freed, alpha m c^2 (d0^2 - d^2) / 2 per point (S = -alpha rho c^2 d). A failed
   // point keeps its defect.
-  Model model;
-  addBody(model, "block", aluminium(), box(Vec3::Zero(), Vec3(4e-3, 4e-3, 4e-3), {4, 4, 4}), Vec3::Zero());
-  Settings settings;
-  settings.end_time = 1.0;
-  Integrator integrator(model, settings);
-  integrator.initialise();
+  Model model = restingBlock(4);
   PointStore& points = model.points;
   const double d0 = -2e-3, alpha = 1.0, k = 10.0, dt = 1e-8;
   std::vector<double> j(static_cast<std::size_t>(points.owned), 1.0);
