@@ -154,8 +154,8 @@ RearWallDamage measureRearWall(const otm::Model& model, const FragmentSet& fragm
   damage.spacings_through = plate.thickness / meanSpacing(model, plate);
 
   for (LocalIndex p = 0; p < model.points.owned; ++p)
-    if (model.points.debris(p) && model.points.carrier[p] == plate.body)
-      damage.debris_carried += model.points.mass[p] * mirror.images();
+    if (model.points.debris(p) && model.points.lastStruck(p) == plate.body)
+      damage.debris_struck += model.points.mass[p] * mirror.images();
   const BodyInfo& body = bodyOf(model, plate);
   for (LocalIndex p = body.point_begin; p < body.point_end; ++p)
     if (model.points.eroded[p] && plate.normal.dot(model.points.x[p]) > plate.rear_face)

@@ -115,7 +115,7 @@ struct RearWallDamage {
   long spall_fragments = 0;                   // detached fragments behind the rear face (full model)
   double spall_mass = 0.0;                    // kg
   double eroded_mass_behind = 0.0;            // kg of eroded wall points behind the rear face
-  double debris_carried = 0.0;                // kg of debris the wall has caught and still carries
+  double debris_struck = 0.0;                 // kg of debris whose last strike was on the wall
   double bulge = 0.0;           // m, how far the wall's attached material reaches behind its original rear face
   double incipient_mass = 0.0;  // kg of failed wall material in the rear half of the wall, still attached
   // The wall's thickness over its points' mean initial spacing: how finely its response is

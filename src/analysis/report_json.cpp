@@ -152,7 +152,7 @@ nlohmann::json toJson(const Report& r) {
                         {"spall_fragments", w.spall_fragments},
                         {"spall_mass_kg", w.spall_mass},
                         {"eroded_mass_behind_kg", w.eroded_mass_behind},
-                        {"debris_carried_kg", w.debris_carried},
+                        {"debris_struck_kg", w.debris_struck},
                         {"bulge_m", w.bulge},
                         {"incipient_spall_mass_kg", w.incipient_mass},
                         {"spacings_through_thickness", w.spacings_through},

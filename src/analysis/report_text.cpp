@@ -58,11 +58,11 @@ std::string formatReport(const Report& r) {
   if (r.rear_wall) {
     const RearWallDamage& w = *r.rear_wall;
     line(out, fmt::format("  rear wall {:<10} {} ({}): {} perforation(s), {} detached spall fragment(s) ({:.3f} g), "
-                          "{:.3f} g failed inside, bulge {:.2f} mm; carries {:.3f} g of debris; {:.1f} point spacings "
+                          "{:.3f} g failed inside, bulge {:.2f} mm; struck by {:.3f} g of debris; {:.1f} point spacings "
                           "through its thickness",
                           r.body_names[w.body], w.classification, w.failed() ? "failed" : "holds", w.perforations,
                           w.spall_fragments, w.spall_mass * 1e3, w.incipient_mass * 1e3, w.bulge * 1e3,
-                          w.debris_carried * 1e3, w.spacings_through));
+                          w.debris_struck * 1e3, w.spacings_through));
   }
   if (r.shield) {
     const ShieldComparison& s = *r.shield;

@@ -38,7 +38,7 @@ std::vector<int> parseSymmetry(const Field& field) {
 otm::Settings parseSolver(const Field& field) {
   MapField map = field.map({"method", "end_time", "cfl", "lme_gamma", "lme_tolerance", "min_neighbours",
                             "max_steps", "contact_distance", "crack_visibility", "volume_averaging",
-                            "debris_capture", "min_dt_fraction", "max_energy_growth"});
+                            "debris_contact", "min_dt_fraction", "max_energy_growth"});
   if (std::optional<Field> method = map.find("method"); method && method->text() != "otm")
     method->fail("unknown method (known: otm)");
   otm::Settings s;
@@ -63,7 +63,7 @@ otm::Settings parseSolver(const Field& field) {
   }
   if (std::optional<Field> visibility = map.find("crack_visibility")) s.crack_visibility = visibility->boolean();
   if (std::optional<Field> averaging = map.find("volume_averaging")) s.volume_averaging = averaging->boolean();
-  if (std::optional<Field> capture = map.find("debris_capture")) s.debris_capture = capture->boolean();
+  if (std::optional<Field> contact = map.find("debris_contact")) s.debris_contact = contact->boolean();
   if (std::optional<Field> fraction = map.find("min_dt_fraction")) {
     s.min_dt_fraction = fraction->quantity(units::dimensionless);
     if (!(s.min_dt_fraction >= 0.0 && s.min_dt_fraction < 1.0)) fraction->fail("must lie in [0, 1) (0: no check)");

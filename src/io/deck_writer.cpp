@@ -203,7 +203,7 @@ std::string resolvedDeckText(const RunConfig& config) {
   scalar(out, "contact_distance", s.contact_distance, "times the point spacing");
   out << YAML::Key << "crack_visibility" << YAML::Value << (s.crack_visibility ? "true" : "false");
   out << YAML::Key << "volume_averaging" << YAML::Value << (s.volume_averaging ? "true" : "false");
-  out << YAML::Key << "debris_capture" << YAML::Value << (s.debris_capture ? "true" : "false");
+  out << YAML::Key << "debris_contact" << YAML::Value << (s.debris_contact ? "true" : "false");
   scalar(out, "min_dt_fraction", s.min_dt_fraction, "of the initial time step; 0: no check");
   scalar(out, "max_energy_growth", s.max_energy_growth, "relative to the initial total energy");
   out << YAML::EndMap;

@@ -59,10 +59,10 @@ struct PointStore {
   std::vector<double> volume_defect;
   std::vector<Mat3> be;              // elastic left Cauchy-Green tensor (plasticity)
   std::vector<std::uint8_t> eroded;  // 1: failed (eigenerosion or damage): no strength, see failed()
-  // Debris capture (solver/otm/debris.hpp), for eroded points: bit b set if body b cannot catch
+  // Debris contact (solver/otm/debris.hpp), for eroded points: bit b set if body b cannot stop
   // the point (its own body and the bodies that body touched when it was released; 0 before),
-  // and the body whose nodes carry it now: its own while it is failed but not yet released,
-  // another body that caught it, or -1 (ballistic).
+  // and the body whose nodes carry it: its own while it is failed but not yet released, none once
+  // it is debris, -1 if it has struck no body yet, -2 - b after it last struck body b.
   std::vector<std::int64_t> passes_through;
   std::vector<std::int32_t> carrier;
   std::vector<Vec3> lambda;  // LME Lagrange multiplier, warm start for the next solve
@@ -75,7 +75,7 @@ struct PointStore {
   double density(LocalIndex p) const { return mass[p] / volume[p]; }
   // The states of a point (docs/theory.md §8): intact; failed, still part of its body, bearing
   // compression only (no strength, no tension: fractured material under pressure); debris,
-  // released once it bears no compression: ballistic, or carried by a body that caught it.
+  // released once it bears no compression: ballistic, pushed back by the bodies it strikes.
   bool failed(LocalIndex p) const { return eroded[p] && carrier[p] == body[p]; }
   bool debris(LocalIndex p) const { return eroded[p] && carrier[p] != body[p]; }
   // An intact point fails: it stays in its body until the integrator releases it.
@@ -83,6 +83,9 @@ struct PointStore {
     eroded[p] = 1;
     carrier[p] = body[p];
   }
+  // Debris point p strikes body b (solver/otm/debris.hpp); the last body it struck, -1 if none.
+  void strike(LocalIndex p, int b) { carrier[p] = -2 - b; }
+  int lastStruck(LocalIndex p) const { return carrier[p] <= -2 ? -2 - carrier[p] : -1; }
   // Current support size: the reference spacing scaled with the volume change.
   double spacing(LocalIndex p) const;
 };

@@ -6,7 +6,7 @@
 #     sphere punches at least its own diameter through a plate; until failed material bore
 #     compression, the 5 mm sphere's debris crossed the bumper through a 4 mm hole: docs/theory.md
 #     §8), and for the 5 mm sphere (t/d = 0.39) at most 4 d;
-#   - the debris cloud reaches the rear wall (the wall carries debris it has caught);
+#   - the debris cloud reaches the rear wall (debris has struck it);
 #   - the 2 mm sphere (0.6 of the critical diameter) leaves the rear wall without perforation or
 #     detached spall, as Christiansen's equation says.
 # Not checked, and printed instead: the 5 mm sphere's rear-wall damage. Christiansen's equation says
@@ -38,14 +38,14 @@ for path, expected in ((sys.argv[1], "perforation"), (sys.argv[2], "none")):
     bumper = [h for h in a["holes"] if h["body"] == "bumper"][0]
     print(f"d = {d*1e3:.2f} mm (critical {dc*1e3:.2f} mm): bumper hole {bumper['diameter_m']*1e3:.2f} mm; "
           f"rear wall simulated {wall['classification']}, Christiansen {predicted}; "
-          f"rear wall carries {wall['debris_carried_kg']*1e3:.4f} g of debris")
+          f"rear wall struck by {wall['debris_struck_kg']*1e3:.4f} g of debris")
     if predicted != expected:
         failures.append(f"d = {d*1e3:.2f} mm: the test expects Christiansen to say {expected}, it says {predicted}")
     upper = 4 * d if expected == "perforation" else float("inf")
     if not bumper["found"] or not (d <= bumper["diameter_m"] <= upper):
         failures.append(f"d = {d*1e3:.2f} mm: bumper hole {bumper['diameter_m']*1e3:.2f} mm "
                         f"(found {bumper['found']}) outside [{d*1e3:.2f}, {upper*1e3:.2f}] mm")
-    if not wall["debris_carried_kg"] > 0.0:
+    if not wall["debris_struck_kg"] > 0.0:
         failures.append(f"d = {d*1e3:.2f} mm: no debris reached the rear wall")
     if expected == "none" and wall["failed"]:
         failures.append(f"d = {d*1e3:.2f} mm: rear wall {wall['classification']}, expected it to hold")

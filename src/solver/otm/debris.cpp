@@ -1,6 +1,9 @@
 #include "solver/otm/debris.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace kessler::otm {
@@ -11,22 +14,26 @@ std::uint64_t bodyBit(int body) {
   return std::uint64_t{1} << body;
 }
 
+// Critical damping of each pair: a linear spring-dashpot with zeta = 1 whose force may only push
+// lets go at t = 2 / omega with e^-2 of the approach speed (restitution 0.14).
+constexpr double damping_ratio = 1.0;
+
 }  // namespace
 
 void markNewDebris(Model& model) {
   PointStore& points = model.points;
-  const bool capture = model.bodies.size() <= max_capturing_bodies;
+  const bool contact = model.bodies.size() <= max_debris_bodies;
   for (LocalIndex p = 0; p < points.owned; ++p) {
     if (!points.debris(p) || points.passes_through[p] != 0) continue;
     const BodyInfo& body = model.bodies[static_cast<std::size_t>(points.body[p])];
-    const std::uint64_t bits = capture ? bodyBit(points.body[p]) | body.touched : ~std::uint64_t{0};
+    const std::uint64_t bits = contact ? bodyBit(points.body[p]) | body.touched : ~std::uint64_t{0};
     points.passes_through[p] = static_cast<std::int64_t>(bits);
   }
 }
 
 void recordContacts(Model& model, std::span<const std::uint64_t> touching) {
   const std::size_t bodies = model.bodies.size();
-  if (bodies > max_capturing_bodies) return;
+  if (bodies > max_debris_bodies) return;
   for (std::size_t a = 0; a < bodies; ++a) {
     model.bodies[a].touched |= bodyBit(static_cast<int>(a));
     for (std::size_t b = 0; b < bodies; ++b)
@@ -37,46 +44,126 @@ void recordContacts(Model& model, std::span<const std::uint64_t> touching) {
   }
 }
 
-double catchDebris(Model& model, std::span<const LocalIndex> caught) {
+void DebrisContact::apply(Model& model, double dt_kick) {
   PointStore& points = model.points;
-  const Connectivity& conn = model.connectivity;
-  const NodeStore& nodes = model.nodes;
-  double dissipated = 0.0;
-  auto kinetic = [&](LocalIndex p) { return 0.5 * points.mass[p] * points.v[p].squaredNorm(); };
-  for (const LocalIndex d : caught) {
-    Vec3 v_nodes = Vec3::Zero();
-    for (Index e = conn.offset[d]; e < conn.offset[d + 1]; ++e) v_nodes += conn.N[e] * nodes.v[conn.node[e]];
-    const Vec3 excess = points.mass[d] * (points.v[d] - v_nodes);
-    double heat = kinetic(d);
-    Vec3 kept = Vec3::Zero();  // the share of nodes that no intact point references
-    for (Index e = conn.offset[d]; e < conn.offset[d + 1]; ++e) {
-      const LocalIndex a = conn.node[e];
-      const Vec3 share = conn.N[e] * excess;
-      double weight = 0.0;
-      for (Index k = conn.node_offset[a]; k < conn.node_offset[a + 1]; ++k) {
-        const Index f = conn.node_slot[k].entry;
-        const LocalIndex q = conn.node_slot[k].point;
-        if (!points.debris(q)) weight += conn.N[f] * points.mass[q];
-      }
-      if (!(weight > 0.0)) {
-        kept += share;
-        continue;
-      }
-      for (Index k = conn.node_offset[a]; k < conn.node_offset[a + 1]; ++k) {
-        const Index f = conn.node_slot[k].entry;
-        const LocalIndex q = conn.node_slot[k].point;
-        if (points.debris(q)) continue;
-        heat += kinetic(q);
-        points.v[q] += (conn.N[f] / weight) * share;
-        heat -= kinetic(q);
-      }
-    }
-    points.v[d] = v_nodes + kept / points.mass[d];
-    heat -= kinetic(d);
-    points.energy[d] += heat / points.mass[d];
-    dissipated += heat;
+  NodeStore& nodes = model.nodes;
+  stored_ = 0.0;
+  step_bound_ = std::numeric_limits<double>::infinity();
+  const std::size_t bodies = model.bodies.size();
+  if (bodies > max_debris_bodies) return;
+  const std::uint64_t every_body =
+      bodies == max_debris_bodies ? ~std::uint64_t{0} : (bodyBit(static_cast<int>(bodies)) - 1);
+  // Debris in flight that some body may stop (passes_through is 0 until markNewDebris).
+  auto flying = [&](LocalIndex p) {
+    const auto passes = static_cast<std::uint64_t>(points.passes_through[p]);
+    return points.debris(p) && passes != 0 && (passes & every_body) != every_body;
+  };
+  bool any = false;
+  for (LocalIndex p = 0; p < points.owned && !any; ++p) any = flying(p);
+  if (!any) return;
+
+  body_spacing_.assign(bodies, 0.0);
+  body_modulus_.assign(bodies, 0.0);
+  double largest = 0.0;
+  for (std::size_t b = 0; b < bodies; ++b) {
+    const BodyInfo& body = model.bodies[b];
+    const LocalIndex begin = body.point_begin, end = std::min(body.point_end, points.owned);
+    double sum = 0.0;
+    for (LocalIndex p = begin; p < end; ++p) sum += points.spacing0[p];
+    body_spacing_[b] = end > begin ? sum / static_cast<double>(end - begin) : 0.0;
+    const Material& material = *model.materials[static_cast<std::size_t>(body.material)];
+    const double c = material.referenceSoundSpeed();
+    body_modulus_[b] = material.referenceDensity() * c * c;
+    largest = std::max(largest, body_spacing_[b]);
   }
-  return dissipated;
+  cells_.build(nodes.x, nodes.size(), std::max(largest, 1e-300));
+  node_stiffness_.resize(static_cast<std::size_t>(nodes.size()), 0.0);
+  touched_.clear();
+
+  for (LocalIndex d = 0; d < points.owned; ++d) {
+    if (!flying(d)) continue;
+    const auto passes = static_cast<std::uint64_t>(points.passes_through[d]);
+    const int own = points.body[d];
+    const double h_d = points.spacing0[d];
+    const double modulus_d = body_modulus_[static_cast<std::size_t>(own)];
+    const double m_d = points.mass[d];
+    const double speed = points.v[d].norm();
+    // Twice the largest contact radius, and what the point flies in two steps: every node it may
+    // meet within the next step is seen, and bounds the step.
+    const double reach = (h_d + largest) + 2.0 * speed * dt_kick;
+    double stiffness = 0.0;
+    pairs_.clear();
+    cells_.forEachWithin(points.x[d], reach, [&](LocalIndex a, double d2) {
+      const int b = nodes.body[a];
+      if (nodes.mass[a] <= 0.0 || ((passes >> b) & 1u)) return;
+      const double h_b = body_spacing_[static_cast<std::size_t>(b)];
+      const double radius = 0.5 * (h_d + h_b);
+      const double dist = std::sqrt(d2);
+      const Vec3 v_a = nodes.momentum[a] / nodes.mass[a];
+      const Vec3 relative = points.v[d] - v_a;
+      if (dist > 0.0 && relative.norm() > 0.0) step_bound_ = std::min(step_bound_, radius / relative.norm());
+      const double h_min = std::min(h_d, h_b);
+      // The debris' half and the body's half in series, over the smaller face.
+      const double k = h_min * h_min / (0.5 * h_d / modulus_d + 0.5 * h_b / body_modulus_[static_cast<std::size_t>(b)]);
+      const double m_reduced = m_d * nodes.mass[a] / (m_d + nodes.mass[a]);
+      const double c = 2.0 * damping_ratio * std::sqrt(k * m_reduced);
+      // Pairs that may touch within the next step count in its bound already: the first step of a
+      // contact must resolve it too. The travel bound keeps a pair from closing by more than cfl
+      // (< 1/2) of its radius in a step, so those within 1.5 radii are the ones.
+      if (dist < 1.5 * radius) {
+        stiffness += k;
+        if (node_stiffness_[a] == 0.0) touched_.push_back(a);
+        node_stiffness_[a] += k;
+      }
+      if (dist >= radius || dist <= 0.0) return;
+      Pair pair;
+      pair.node = a;
+      pair.n = (points.x[d] - nodes.x[a]) / dist;  // from the node to the debris
+      const double overlap = radius - dist;
+      pair.approach = -relative.dot(pair.n);
+      pair.spring = k * overlap;
+      pair.k = k;
+      pair.c = c;
+      pair.m = m_reduced;
+      stored_ += 0.5 * k * overlap * overlap;
+      pairs_.push_back(pair);
+    });
+    if (stiffness > 0.0) step_bound_ = std::min(step_bound_, std::sqrt(m_d / stiffness));
+    if (pairs_.empty()) continue;
+    // Each pair's force from the approach speed u' it leaves after the kick: the dashpot acts on u'
+    // (implicit, u' = u - (k overlap + c u') dt / m), so that it cannot reverse the approach within one
+    // step, whatever the step, with each of the debris point's n pairs stopping a share m / n of it;
+    // and no kick gives the pair more speed apart than its spring's energy could, sqrt(k / m) overlap.
+    const double share = 1.0 / static_cast<double>(pairs_.size());
+    for (Pair& pair : pairs_) {
+      const double m = share * pair.m;
+      const double rate = dt_kick / m;
+      double approach_after = (pair.approach - pair.spring * rate) / (1.0 + pair.c * rate);
+      approach_after = std::max(approach_after, -std::sqrt(pair.spring * pair.spring / (pair.k * m)));
+      pair.force = std::max(m * (pair.approach - approach_after) / dt_kick, 0.0);
+    }
+    Vec3 dv = Vec3::Zero();
+    for (const Pair& pair : pairs_) dv += (dt_kick * pair.force / m_d) * pair.n;
+    // The dashpots' dissipation (f - k overlap) times the approach speed at the middle of the kick,
+    // so that the heat is what the kick takes from the pair's relative motion, not its first-order
+    // estimate (which overshoots by the square of the kick).
+    double heat = 0.0;
+    for (const Pair& pair : pairs_) {
+      const LocalIndex a = pair.node;
+      const double node_dv = dt_kick * pair.force / nodes.mass[a];
+      const double approach_mid = pair.approach - 0.5 * (dv.dot(pair.n) + node_dv);
+      heat += (pair.force - pair.spring) * approach_mid * dt_kick;
+      nodes.force[a] -= pair.force * pair.n;
+    }
+    points.v[d] += dv;
+    points.energy[d] += heat / m_d;
+    points.strike(d, nodes.body[pairs_.front().node]);
+  }
+  // Each node's springs together, as each debris point's above.
+  for (const LocalIndex a : touched_) {
+    step_bound_ = std::min(step_bound_, std::sqrt(nodes.mass[a] / node_stiffness_[a]));
+    node_stiffness_[a] = 0.0;
+  }
 }
 
 }  // namespace kessler::otm

@@ -1,19 +1,27 @@
 #pragma once
-// Debris capture (docs/theory.md §9). Debris (failed material released from its body,
-// solver/otm/release.hpp) carries no stress and flies ballistically until it reaches a body it may
-// hit: then it joins that body's nodes (Neighbourhoods), is carried by them and loads them with
-// its mass and momentum, and is released to fly on when it leaves their hull (a perforated wall).
+// Debris that strikes as matter (docs/theory.md §9). Debris (failed material released from its
+// body, solver/otm/release.hpp) carries no stress and flies ballistically until it reaches the
+// nodes of a body it may hit. Then a contact force between it and each node it overlaps pushes it
+// back: a spring whose stiffness is the two materials' bulk moduli in series over the debris' face,
+// so that a fragment striking a wall stops within about the time a wave takes to cross it and loads
+// the nodes it meets with about the acoustic pressure rho c v, and a critically damped dashpot that
+// makes the strike nearly inelastic (restitution e^-2), its dissipation heating the debris. The node
+// takes the opposite force, so momentum is exact; the springs' energy is booked as stored energy. The
+// contact only pushes: debris does not stick, and it does not pass through a wall it cannot perforate.
 // It may not hit its own body, nor a body its body was in contact with when it was released: the
 // debris of a projectile breaking up in a bumper passes through the bumper's hole, and the rear
-// wall behind is loaded by the debris cloud.
+// wall behind is struck by the debris cloud.
+#include "search/cell_list.hpp"
 #include "solver/otm/model.hpp"
 
+#include <limits>
 #include <span>
+#include <vector>
 
 namespace kessler::otm {
 
-// Debris capture needs one bit per body; a model with more bodies keeps all debris ballistic.
-constexpr std::size_t max_capturing_bodies = 64;
+// Debris contact needs one bit per body; a model with more bodies keeps all debris ballistic.
+constexpr std::size_t max_debris_bodies = 64;
 
 // Marks the points released as debris since the last call (passes_through still 0) with the
 // bodies they pass through: those their body has touched so far (BodyInfo::touched).
@@ -23,12 +31,39 @@ void markNewDebris(Model& model);
 // bit b set if nodes of body b lie in the rows of intact points of body a.
 void recordContacts(Model& model, std::span<const std::uint64_t> touching);
 
-// The inelastic impact of debris points caught this step (in point order; their rows are over
-// the nodes of the catching body). Each takes the velocity interpolated from those nodes; the
-// momentum it loses goes, through the same nodes, to the points of the body that share them (each node
-// hands its share N m (v - v_nodes) to its points in proportion to N m), so momentum is exact;
-// the kinetic energy this dissipates becomes internal energy of the debris point. Returns the
-// energy dissipated (J).
-double catchDebris(Model& model, std::span<const LocalIndex> caught);
+class DebrisContact {
+ public:
+  // Adds the contact forces of this step's configuration to nodes.force (after the assembly) and
+  // gives each debris point in contact its velocity change dt_kick f / m and its dissipation as
+  // heat. dt_kick: the kick's interval of the step (the nodes' leapfrog).
+  void apply(Model& model, double dt_kick);
+
+  // The energy the contact springs store in the configuration apply() last saw, J.
+  double storedEnergy() const { return stored_; }
+  // The longest step the contact allows, before the integrator's cfl: the time a debris point takes
+  // to cross its contact radius relative to a node it approaches, and 1/omega of the springs of each
+  // debris point and of each node together, counting the pairs that may touch within the next step
+  // (the dashpot is implicit and needs no bound); infinity where no debris is near a body it may hit.
+  double stepBound() const { return step_bound_; }
+
+ private:
+  struct Pair {
+    LocalIndex node = 0;
+    Vec3 n = Vec3::Zero();             // unit vector from the node to the debris point
+    double approach = 0.0;             // relative speed along -n at the start of the step
+    double spring = 0.0;               // k times the overlap
+    double k = 0.0, c = 0.0, m = 0.0;  // stiffness, damping coefficient, reduced mass
+    double force = 0.0;                // spring plus dashpot, never pulling
+  };
+  CellList cells_;
+  std::vector<Pair> pairs_;           // of the debris point in hand
+  std::vector<double> body_spacing_;  // mean reference spacing of each body's points
+  std::vector<double> body_modulus_;  // rho0 c0^2 of each body's material
+  // Per node, the stiffness of its pairs this step (zero outside touched_).
+  std::vector<double> node_stiffness_;
+  std::vector<LocalIndex> touched_;
+  double stored_ = 0.0;
+  double step_bound_ = std::numeric_limits<double>::infinity();
+};
 
 }  // namespace kessler::otm

@@ -81,6 +81,8 @@ void Integrator::advance(double dt) {
   {
     ScopedPhase phase(timers_, "assembly");
     assembleNodes();
+    // Debris that strikes a body pushes its nodes (solver/otm/debris.hpp).
+    if (settings_.debris_contact) contact_.apply(model_, 0.5 * (dt_last_ + dt));
   }
   {
     ScopedPhase phase(timers_, "node update");
@@ -101,15 +103,11 @@ void Integrator::advance(double dt) {
     ScopedPhase phase(timers_, "erosion");
     eroded_ += erosion_.apply(model_);
     release_.apply(model_);
-    if (settings_.debris_capture) markNewDebris(model_);
+    if (settings_.debris_contact) markNewDebris(model_);
   }
   neighbourhoods_.update(model_);
   timers_.add("search", neighbourhoods_.searchSeconds());
   timers_.add("shape functions", neighbourhoods_.shapeSeconds());
-  if (!neighbourhoods_.caught().empty()) {
-    ScopedPhase phase(timers_, "erosion");
-    catchDebris(model_, neighbourhoods_.caught());
-  }
   time_ += dt;
   dt_last_ = dt;
   ++steps_;
@@ -175,8 +173,8 @@ void Integrator::updatePoints() {
   const double kick = dt_step_ > 0.0 ? dt_average_ / dt_step_ : 1.0;
 #pragma omp parallel for schedule(static) reduction(min : bad)
   for (LocalIndex p = 0; p < points.owned; ++p) {
-    if (points.debris(p) && points.carrier[p] < 0) {
-      // Debris in flight: ballistic, with the point's own velocity.
+    if (points.debris(p)) {
+      // Debris: ballistic, with the point's own velocity (the contact's kicks included).
       points.x[p] += dt_step_ * points.v[p];
       points.dF[p].setIdentity();
       continue;
@@ -196,14 +194,6 @@ void Integrator::updatePoints() {
     // times the spread of its nodes' increments, sum_a N_a |dv_a - dv|^2 (never negative: N >= 0,
     // sum N = 1). It becomes heat, so the step conserves energy as the nodes' leapfrog does.
     const double heat = 0.5 * points.mass[p] * std::max(dv2 - dv.squaredNorm(), 0.0);
-    if (points.debris(p)) {
-      // Debris a body has caught: carried by its nodes, with no strain of its own.
-      points.x[p] += dx;
-      points.v[p] += dv;
-      points.dF[p].setIdentity();
-      points.energy[p] += heat / points.mass[p];
-      continue;
-    }
     transfer_heat_[p] = heat;
     // The work the point's forces did on its nodes over the step, at the nodes' mean velocity
     // (v_old + v_new)/2 over the kick's interval: what the nodes' kinetic energy gave up to it
@@ -359,6 +349,7 @@ double Integrator::stableStep() const {
     if (points.sound_speed[p] > 0.0) dt = std::min(dt, stepLength(model_, p) / points.sound_speed[p]);
     if (volume_rate_[p] != 0.0) dt = std::min(dt, 1.0 / (3.0 * std::abs(volume_rate_[p])));
   }
+  if (settings_.debris_contact) dt = std::min(dt, contact_.stepBound());
   KESSLER_VERIFY(std::isfinite(dt) && dt > 0.0,
                  "no stable time step: every point is debris or at rest without a sound speed, or the model is empty");
   return settings_.cfl * dt;
@@ -370,7 +361,7 @@ Energies Integrator::energies() const {
   e.kinetic = deterministicSum(points.owned, 0.0,
                                [&](LocalIndex p) { return 0.5 * points.mass[p] * points.v[p].squaredNorm(); });
   e.internal = deterministicSum(points.owned, 0.0, [&](LocalIndex p) { return points.mass[p] * points.energy[p]; });
-  e.stabilisation = stabilisation_energy_;
+  e.stabilisation = stabilisation_energy_ + contact_.storedEnergy();
   e.momentum = deterministicSum(points.owned, Vec3(Vec3::Zero()),
                                 [&](LocalIndex p) -> Vec3 { return points.mass[p] * points.v[p]; });
   return e;

@@ -4,6 +4,7 @@
 // Euler-Lagrange update of node positions, material points carried by the nodes' motion,
 // constitutive update, new neighbourhoods and shape functions, CFL time step.
 #include "core/timer.hpp"
+#include "solver/otm/debris.hpp"
 #include "solver/otm/eigenerosion.hpp"
 #include "solver/otm/integrator_assembly.hpp"
 #include "solver/otm/model.hpp"
@@ -91,6 +92,7 @@ class Integrator {
   Neighbourhoods neighbourhoods_;
   Eigenerosion erosion_;
   DebrisRelease release_;
+  DebrisContact contact_;
   // Each node's displacement and velocity increment of the step (FLIP-style transfer to points),
   // side by side: the points' gather reads both for each of its nodes.
   struct NodeIncrement {

@@ -131,81 +131,16 @@ int Neighbourhoods::gather(const Model& model, LocalIndex p, double scale, bool 
   return static_cast<int>(s.node.size());
 }
 
-double Neighbourhoods::debrisSpacing(LocalIndex p, int body) const {
-  return std::max(spacing_[p], body_spacing_[static_cast<std::size_t>(body)]);
-}
-
-int Neighbourhoods::gatherDebris(const Model& model, LocalIndex p, Scratch& s) const {
-  const NodeStore& nodes = model.nodes;
-  const PointStore& points = model.points;
-  s.node.clear();
-  const auto passes_through = static_cast<std::uint64_t>(points.passes_through[p]);
-  if (passes_through == 0 || !settings_.debris_capture) return 0;
-  auto may_hit = [&](int body) { return !((passes_through >> body) & 1u); };
-  double reach = spacing_[p];  // the largest support of the point over the bodies it may hit
-  // Debris that may hit no body (all the debris of a projectile and the one plate it struck)
-  // searches nothing.
-  bool any = false;
-  for (std::size_t b = 0; b < body_spacing_.size(); ++b) {
-    if (!may_hit(static_cast<int>(b))) continue;
-    any = true;
-    reach = std::max(reach, body_spacing_[b]);
-  }
-  if (!any) return 0;
-  const double radius = lme::cutoffRadius(settings_.lme_gamma, reach, settings_.lme_tolerance);
-  s.candidates.clear();
-  cells_.forEachWithin(points.x[p], radius, [&](LocalIndex a, double d2) {
-    if (nodes.mass[a] > 0.0 && may_hit(nodes.body[a])) s.candidates.emplace_back(a, d2);
-  });
-  int carrier = points.carrier[p];
-  if (carrier < 0) {
-    double nearest = std::numeric_limits<double>::infinity();
-    for (const auto& [a, d2] : s.candidates) {
-      const double contact = settings_.contact_distance * debrisSpacing(p, nodes.body[a]);
-      if (d2 <= contact * contact && d2 < nearest) {
-        nearest = d2;
-        carrier = nodes.body[a];
-      }
-    }
-    if (carrier < 0) return 0;
-  }
-  const double cutoff = lme::cutoffRadius(settings_.lme_gamma, debrisSpacing(p, carrier), settings_.lme_tolerance);
-  for (const auto& [a, d2] : s.candidates)
-    if (nodes.body[a] == carrier && d2 <= cutoff * cutoff) s.node.push_back(a);
-  if (static_cast<int>(s.node.size()) < settings_.min_neighbours) s.node.clear();
-  return static_cast<int>(s.node.size());
-}
-
 lme::Result Neighbourhoods::shapeFunctionsAt(Model& model, LocalIndex p, std::span<const LocalIndex> row,
                                              std::span<double> N, std::span<Vec3> dN, Scratch& s, double h,
                                              double gamma_scale) const {
   const PointStore& points = model.points;
   s.offsets.resize(row.size());
   for (std::size_t i = 0; i < row.size(); ++i) s.offsets[i] = points.x[p] - model.nodes.x[row[i]];
-  // Nodes nearly coplanar as seen from the point (lme::min_covariance) are refused: debris is not
-  // caught, failed material is retried or released, intact material retried (retryPoints).
+  // Nodes nearly coplanar as seen from the point (lme::min_covariance) are refused: failed material
+  // is retried or released, intact material retried (retryPoints).
   return lme::shapeFunctions(s.offsets, lme::beta(gamma_scale * settings_.lme_gamma, h), h, model.points.lambda[p], N,
                              dN, true);
-}
-
-void Neighbourhoods::carryDebris(Model& model, LocalIndex p, Index first, std::size_t n, Scratch& s) const {
-  PointStore& points = model.points;
-  Connectivity& conn = model.connectivity;
-  const int carrier = model.nodes.body[conn.node[first]];
-  const bool newly = points.carrier[p] != carrier;
-  if (newly) points.lambda[p].setZero();  // the warm start is from the point's intact past
-  const std::span<double> N(conn.N.data() + first, n);
-  const std::span<Vec3> dN(conn.dN.data() + first, n);
-  const double h = debrisSpacing(p, carrier);
-  if (shapeFunctionsAt(model, p, std::span<const LocalIndex>(conn.node.data() + first, n), N, dN, s, h).status ==
-      lme::Status::converged) {
-    if (newly) s.caught.push_back(p);
-    points.carrier[p] = carrier;
-    return;
-  }
-  std::fill(N.begin(), N.end(), 0.0);
-  std::fill(dN.begin(), dN.end(), Vec3::Zero());
-  points.carrier[p] = -1;
 }
 
 // A point near a strongly compressed or re-entrant surface can fall outside the hull of the nodes
@@ -334,31 +269,18 @@ void Neighbourhoods::update(Model& model) {
   Stopwatch watch;
   // Cells of the mean cut-off radius of the intact points: a query with a larger radius visits more
   // cells, so this is only about cost. The largest radius would let a few strongly expanded points
-  // (release waves, spall) make the cells, and so every query, far too large.
-  // And the mean spacing of each body's intact points: the support a debris point takes among its
-  // nodes (a fine debris cloud caught by a coarse wall needs the wall's node spacing). Bodies are
-  // contiguous ranges of points; their sums are deterministic whatever the thread count.
+  // (release waves, spall) make the cells, and so every query, far too large. Deterministic sums
+  // whatever the thread count.
   const std::size_t bodies = model.bodies.size();
   cutoff_per_spacing_ = lme::cutoffRadius(settings_.lme_gamma, 1.0, settings_.lme_tolerance);
   spacing_.resize(static_cast<std::size_t>(np));
 #pragma omp parallel for schedule(static)
   for (LocalIndex p = 0; p < np; ++p) spacing_[p] = points.spacing(p);
-  body_spacing_.assign(bodies, 0.0);
-  body_points_.assign(bodies, 0);
-  double spacing_sum = 0.0;
-  LocalIndex intact = 0;
-  for (std::size_t b = 0; b < bodies; ++b) {
-    const LocalIndex begin = model.bodies[b].point_begin, end = std::min(model.bodies[b].point_end, np);
-    const Eigen::Vector2d sum =
-        deterministicSum(std::max(end - begin, 0), Eigen::Vector2d(Eigen::Vector2d::Zero()), [&](LocalIndex i) {
-          const LocalIndex p = begin + i;
-          return points.eroded[p] ? Eigen::Vector2d(0.0, 0.0) : Eigen::Vector2d(spacing_[p], 1.0);
-        });
-    spacing_sum += sum[0];
-    intact += static_cast<LocalIndex>(sum[1]);
-    body_points_[b] = static_cast<LocalIndex>(sum[1]);
-    if (body_points_[b] > 0) body_spacing_[b] = sum[0] / sum[1];
-  }
+  const Eigen::Vector2d sum = deterministicSum(np, Eigen::Vector2d(Eigen::Vector2d::Zero()), [&](LocalIndex p) {
+    return points.eroded[p] ? Eigen::Vector2d(0.0, 0.0) : Eigen::Vector2d(spacing_[p], 1.0);
+  });
+  const double spacing_sum = sum[0];
+  const auto intact = static_cast<LocalIndex>(sum[1]);
   const double cell_size =
       intact > 0 ? lme::cutoffRadius(settings_.lme_gamma, spacing_sum / intact, settings_.lme_tolerance) : 1.0;
   cells_.build(nodes.x, nodes.size(), std::max(cell_size, 1e-300));
@@ -384,9 +306,8 @@ void Neighbourhoods::update(Model& model) {
     Scratch& s = scratch_[static_cast<std::size_t>(t)];
     s.nearest_foreign.resize(bodies);
     s.retry.clear();
-    s.caught.clear();
-    // Contacts are recorded for the bodies debris capture can tell apart (one bit each).
-    s.touching.assign(bodies <= max_capturing_bodies ? bodies : 0, 0);
+    // Contacts are recorded for the bodies debris contact can tell apart (one bit each).
+    s.touching.assign(bodies <= max_debris_bodies ? bodies : 0, 0);
     // Chunks of points, dynamically scheduled (points near cracks cost more: the visibility
     // test); a chunk's node lists go to the searching thread's rows, in point order, and the
     // chunk remembers which thread and where.
@@ -397,10 +318,10 @@ void Neighbourhoods::update(Model& model) {
       chunk_start_[c] = s.rows.size();
       const LocalIndex end = std::min<LocalIndex>(np, (c + 1) * chunk);
       for (LocalIndex p = c * chunk; p < end; ++p) {
-        // Debris has a row only while a body carries it; failed points search as intact ones.
+        // Debris has no row (solver/otm/debris.hpp); failed points search as intact ones.
         if (points.debris(p)) {
-          count_[p] = visible_[p] = gatherDebris(model, p, s);
-          if (count_[p] == 0) points.carrier[p] = -1;
+          s.node.clear();
+          count_[p] = visible_[p] = 0;
         } else {
           count_[p] = gather(model, p, 1.0, settings_.crack_visibility, s);
           visible_[p] = static_cast<int>(s.visible);
@@ -421,17 +342,13 @@ void Neighbourhoods::update(Model& model) {
     Stopwatch shape_watch;
 #pragma omp for schedule(dynamic, 256) nowait
     for (LocalIndex p = 0; p < np; ++p) {
-      if (points.debris(p) && count_[p] == 0) continue;
+      if (points.debris(p)) continue;
       const LocalIndex c = p / chunk;
       const Index first = conn.offset[p];
       const auto n = static_cast<std::size_t>(count_[p]);
       const LocalIndex* row = scratch_[static_cast<std::size_t>(chunk_thread_[c])].rows.data() + chunk_start_[c] +
                               (first - conn.offset[c * chunk]);
       std::copy_n(row, n, conn.node.begin() + first);
-      if (points.debris(p)) {
-        carryDebris(model, p, first, n, s);
-        continue;
-      }
       // Over the visible nodes; the hidden ones, at the end of the row, get zero weight. A point
       // that lies outside the hull of its visible nodes (boxed in by eroded points rather than
       // facing a crack) takes them all.
@@ -453,11 +370,8 @@ void Neighbourhoods::update(Model& model) {
 #pragma omp critical
     shape_time = std::max(shape_time, my_shape_time);
   }
-  caught_.clear();
-  for (const Scratch& s : scratch_) caught_.insert(caught_.end(), s.caught.begin(), s.caught.end());
-  std::sort(caught_.begin(), caught_.end());
   retryPoints(model);
-  if (bodies <= max_capturing_bodies) {
+  if (bodies <= max_debris_bodies) {
     std::vector<std::uint64_t> touching(bodies, 0);
     for (const Scratch& s : scratch_)
       for (std::size_t b = 0; b < bodies; ++b) touching[b] |= s.touching[b];

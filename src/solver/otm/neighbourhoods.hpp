@@ -21,9 +21,6 @@ class Neighbourhoods {
   // its shape functions cannot be built (outside the convex hull of its nodes, no nodes).
   void update(Model& model);
 
-  // The debris points caught by a body in the last update (solver/otm/debris.hpp), in point order.
-  std::span<const LocalIndex> caught() const { return caught_; }
-
   // Time spent in the search and in the shape functions during the last update.
   double searchSeconds() const { return search_seconds_; }
   double shapeSeconds() const { return shape_seconds_; }
@@ -38,11 +35,9 @@ class Neighbourhoods {
     std::vector<std::pair<LocalIndex, double>> retry;
     std::vector<double> N;          // shape functions of retried points
     std::vector<Vec3> dN;
-    std::vector<std::pair<LocalIndex, double>> candidates;
     std::vector<double> nearest_foreign;  // squared distance per body
     std::vector<Vec3> offsets;
     std::vector<Vec3> occluders;          // eroded points near the point being processed
-    std::vector<LocalIndex> caught;       // debris points this thread saw caught
     std::vector<std::uint64_t> touching;  // per body: bodies whose nodes its points took (contact)
   };
 
@@ -50,15 +45,6 @@ class Neighbourhoods {
   // s.node; returns their count. With `visibility`, nodes hidden behind eroded points (see
   // hidden()) go to the end of the list, after the s.visible visible ones.
   int gather(const Model& model, LocalIndex p, double scale, bool visibility, Scratch& s) const;
-  // The row of debris point p (eroded): the nodes of the body that carries it, or of the body it
-  // reaches (nearest node within the contact distance, not a body it passes through, nodes with
-  // mass only), within the cut-off radius of debrisSpacing(); empty if it flies on. Returns the
-  // row length.
-  int gatherDebris(const Model& model, LocalIndex p, Scratch& s) const;
-  // Shape functions of debris point p over its row (entries [first, first + n) of the
-  // connectivity): carried by the row's body if they converge (a new catch is noted in
-  // s.caught), released to fly on with a zero row if not (outside the hull: a perforated wall).
-  void carryDebris(Model& model, LocalIndex p, Index first, std::size_t n, Scratch& s) const;
   // Visibility across cracks: node position xa is hidden from point p when the segment between
   // them crosses eroded material, i.e. a sample on it lies nearer an eroded point (of
   // s.occluders, within `spacing`) than any intact one. collectOccluders: the eroded points
@@ -72,9 +58,6 @@ class Neighbourhoods {
   // support size h and locality gamma_scale times the settings' gamma.
   lme::Result shapeFunctionsAt(Model& model, LocalIndex p, std::span<const LocalIndex> row, std::span<double> N,
                                std::span<Vec3> dN, Scratch& s, double h, double gamma_scale = 1.0) const;
-  // The support size of debris point p among the nodes of `body`: its own spacing, or the body's
-  // mean spacing if larger.
-  double debrisSpacing(LocalIndex p, int body) const;
   // Retries the points whose shape functions failed or are ill-conditioned with larger radii and
   // smoother supports; throws if an intact point still fails.
   void retryPoints(Model& model);
@@ -90,11 +73,8 @@ class Neighbourhoods {
   std::vector<int> chunk_thread_;         // per chunk of points: the thread that searched it
   std::vector<std::size_t> chunk_start_;  // and where its node lists start in that thread's rows
   std::vector<std::uint32_t> transpose_scratch_;
-  std::vector<LocalIndex> caught_;
   std::vector<double> spacing_;          // per point: its support size h this step (a cube root each)
   double cutoff_per_spacing_ = 0.0;      // the LME cut-off radius over h (a logarithm and a root)
-  std::vector<double> body_spacing_;     // mean spacing of each body's intact points
-  std::vector<LocalIndex> body_points_;  // and their count
   double search_seconds_ = 0.0, shape_seconds_ = 0.0;
 };
 

@@ -55,11 +55,11 @@ struct Settings {
   // erosion of a shocked impact target it leaves points one-sided neighbourhoods and the run
   // becomes unstable (measured on examples/sphere-plate.yaml).
   bool crack_visibility = false;
-  // Debris capture (solver/otm/debris.hpp): an eroded point that reaches a body it may hit (not its
-  // own, nor one its body touched when it eroded) joins that body's nodes, moving with them and
-  // loading them with its mass and momentum, until it leaves their hull again. Without it, debris
-  // passes through every body (a Whipple shield's rear wall would never be hit).
-  bool debris_capture = true;
+  // Debris contact (solver/otm/debris.hpp): debris that reaches a body it may hit (not its own, nor
+  // one its body touched before it was released) strikes it as matter, pushed back by a contact
+  // force against the body's nodes. Without it, debris passes through every body (a Whipple
+  // shield's rear wall would never be hit).
+  bool debris_contact = true;
   std::vector<RigidWall> walls;
   // Eigenerosion (Pandolfi & Ortiz 2012; docs/theory.md §8): radius of the ball B_eps as a
   // multiple of the point spacing h.

@@ -268,23 +268,25 @@ TEST(RearWall, PerforationSpallAndNone) {
   {
     PlateModel m = plateModel();
     erodeWhere(m.model, m.plate, [](const Vec3& x) { return x.head<2>().norm() < 3 * mm; });
-    // Debris of another body: three points the wall has caught, one another body carries, and
-    // one still flying.
+    // Debris of another body: three points whose last strike was on the wall, one that last struck
+    // another body, and one that has struck nothing.
     const int cloud = addCloud(m.model, "debris",
                                {Vec3(5 * mm, 0, -1 * mm), Vec3(6 * mm, 0, -1 * mm), Vec3(7 * mm, 0, -1 * mm),
                                 Vec3(8 * mm, 0, 1 * mm), Vec3(9 * mm, 0, 1 * mm)},
                                1e-9);
     PointStore& points = m.model.points;
-    double carried = 0.0;
+    double struck = 0.0;
     const BodyInfo& debris = m.model.bodies[cloud];
     for (LocalIndex p = debris.point_begin; p < debris.point_end; ++p) {
       const LocalIndex k = p - debris.point_begin;
       points.eroded[p] = 1;
-      points.carrier[p] = k < 3 ? m.plate : k == 3 ? cloud + 1 : -1;
-      carried += k < 3 ? points.mass[p] : 0.0;
+      points.carrier[p] = -1;
+      if (k < 3) points.strike(p, m.plate);
+      if (k == 3) points.strike(p, cloud + 1);
+      struck += k < 3 ? points.mass[p] : 0.0;
     }
     const RearWallDamage d = measureRearWall(m.model, findFragments(m.model, {}, {}), m.geometry);
-    EXPECT_DOUBLE_EQ(d.debris_carried, carried);
+    EXPECT_DOUBLE_EQ(d.debris_struck, struck);
     EXPECT_EQ(d.classification, "perforation");
     ASSERT_EQ(d.perforations, 1);
     EXPECT_NEAR(d.perforation_diameters[0], 6 * mm, measureHole(m.model, m.geometry, 0).cell);
@@ -319,7 +321,7 @@ TEST(RearWall, PerforationSpallAndNone) {
     EXPECT_EQ(d.classification, "none");
     EXPECT_EQ(d.perforations, 0);
     EXPECT_EQ(d.spall_fragments, 0);
-    EXPECT_EQ(d.debris_carried, 0.0);
+    EXPECT_EQ(d.debris_struck, 0.0);
   }
 }
 

@@ -54,7 +54,7 @@ TEST(DeckOverrides, UnknownKeysAreErrorsFromTheCommandLine) {
   EXPECT_EQ(errorOf({"solver.endtime=5 us"}),
             "command line (--set solver.endtime=5 us): solver.endtime: unknown key (allowed: method, "
             "end_time, cfl, "
-            "lme_gamma, lme_tolerance, min_neighbours, max_steps, contact_distance, crack_visibility, volume_averaging, debris_capture, min_dt_fraction, "
+            "lme_gamma, lme_tolerance, min_neighbours, max_steps, contact_distance, crack_visibility, volume_averaging, debris_contact, min_dt_fraction, "
             "max_energy_growth)");
   EXPECT_EQ(errorOf({"outptu.dir=x"}).rfind("command line (--set outptu.dir=x): outptu: unknown key", 0), 0u);
   EXPECT_EQ(errorOf({"bodies.0.shape.cone.radius=1 mm"})

@@ -49,7 +49,7 @@ Hit strike(bool failed) {
   Model& model = hit.model;
   Settings settings;
   settings.end_time = 2e-6;
-  settings.debris_capture = false;  // debris passes through the wall
+  settings.debris_contact = false;  // debris passes through the wall
   Integrator integrator(model, settings);
   integrator.initialise();
   for (LocalIndex p = 0; p < model.points.owned; ++p) {
