@@ -62,20 +62,22 @@ void DebrisContact::apply(Model& model, double dt_kick) {
   for (LocalIndex p = 0; p < points.owned && !any; ++p) any = flying(p);
   if (!any) return;
 
-  body_spacing_.assign(bodies, 0.0);
-  body_modulus_.assign(bodies, 0.0);
-  double largest = 0.0;
-  for (std::size_t b = 0; b < bodies; ++b) {
-    const BodyInfo& body = model.bodies[b];
-    const LocalIndex begin = body.point_begin, end = std::min(body.point_end, points.owned);
-    double sum = 0.0;
-    for (LocalIndex p = begin; p < end; ++p) sum += points.spacing0[p];
-    body_spacing_[b] = end > begin ? sum / static_cast<double>(end - begin) : 0.0;
-    const Material& material = *model.materials[static_cast<std::size_t>(body.material)];
-    const double c = material.referenceSoundSpeed();
-    body_modulus_[b] = material.referenceDensity() * c * c;
-    largest = std::max(largest, body_spacing_[b]);
+  if (body_spacing_.size() != bodies) {
+    // Each body's mean reference spacing and reference modulus: fixed for a run, found once.
+    body_spacing_.assign(bodies, 0.0);
+    body_modulus_.assign(bodies, 0.0);
+    for (std::size_t b = 0; b < bodies; ++b) {
+      const BodyInfo& body = model.bodies[b];
+      const LocalIndex begin = body.point_begin, end = std::min(body.point_end, points.owned);
+      double sum = 0.0;
+      for (LocalIndex p = begin; p < end; ++p) sum += points.spacing0[p];
+      body_spacing_[b] = end > begin ? sum / static_cast<double>(end - begin) : 0.0;
+      const Material& material = *model.materials[static_cast<std::size_t>(body.material)];
+      const double c = material.referenceSoundSpeed();
+      body_modulus_[b] = material.referenceDensity() * c * c;
+    }
   }
+  const double largest = *std::max_element(body_spacing_.begin(), body_spacing_.end());
   cells_.build(nodes.x, nodes.size(), std::max(largest, 1e-300));
   node_stiffness_.resize(static_cast<std::size_t>(nodes.size()), 0.0);
   touched_.clear();
@@ -91,7 +93,6 @@ void DebrisContact::apply(Model& model, double dt_kick) {
     // Twice the largest contact radius, and what the point flies in two steps: every node it may
     // meet within the next step is seen, and bounds the step.
     const double reach = (h_d + largest) + 2.0 * speed * dt_kick;
-    double stiffness = 0.0;
     pairs_.clear();
     cells_.forEachWithin(points.x[d], reach, [&](LocalIndex a, double d2) {
       const int b = nodes.body[a];
@@ -107,11 +108,10 @@ void DebrisContact::apply(Model& model, double dt_kick) {
       const double k = h_min * h_min / (0.5 * h_d / modulus_d + 0.5 * h_b / body_modulus_[static_cast<std::size_t>(b)]);
       const double m_reduced = m_d * nodes.mass[a] / (m_d + nodes.mass[a]);
       const double c = 2.0 * damping_ratio * std::sqrt(k * m_reduced);
-      // Pairs that may touch within the next step count in its bound already: the first step of a
-      // contact must resolve it too. The travel bound keeps a pair from closing by more than cfl
-      // (< 1/2) of its radius in a step, so those within 1.5 radii are the ones.
+      // A node's pairs that may touch within the next step count in its bound already: the first
+      // step of a contact must resolve it too. The travel bound keeps a pair from closing by more
+      // than cfl (< 1/2) of its radius in a step, so those within 1.5 radii are the ones.
       if (dist < 1.5 * radius) {
-        stiffness += k;
         if (node_stiffness_[a] == 0.0) touched_.push_back(a);
         node_stiffness_[a] += k;
       }
@@ -128,38 +128,42 @@ void DebrisContact::apply(Model& model, double dt_kick) {
       stored_ += 0.5 * k * overlap * overlap;
       pairs_.push_back(pair);
     });
-    if (stiffness > 0.0) step_bound_ = std::min(step_bound_, std::sqrt(m_d / stiffness));
     if (pairs_.empty()) continue;
-    // Each pair's force from the approach speed u' it leaves after the kick: the dashpot acts on u'
-    // (implicit, u' = u - (k overlap + c u') dt / m), so that it cannot reverse the approach within one
-    // step, whatever the step, with each of the debris point's n pairs stopping a share m / n of it;
-    // and no kick gives the pair more speed apart than its spring's energy could, sqrt(k / m) overlap.
+    // Each pair's force from the approach speed u' it leaves after the kick. Spring and dashpot act
+    // on the state at the end of the step (implicit, u' = u - (k (overlap + u' dt) + c u') dt / m), so
+    // that no step, however long, lets the pair overshoot (the debris point's own springs need no
+    // step bound), with each of the debris point's n pairs stopping a share m / n of it; and no kick
+    // gives the pair more speed apart than its spring's energy could, sqrt(k / m) overlap.
     const double share = 1.0 / static_cast<double>(pairs_.size());
     for (Pair& pair : pairs_) {
       const double m = share * pair.m;
       const double rate = dt_kick / m;
-      double approach_after = (pair.approach - pair.spring * rate) / (1.0 + pair.c * rate);
+      double approach_after = (pair.approach - pair.spring * rate) / (1.0 + (pair.c + pair.k * dt_kick) * rate);
       approach_after = std::max(approach_after, -std::sqrt(pair.spring * pair.spring / (pair.k * m)));
       pair.force = std::max(m * (pair.approach - approach_after) / dt_kick, 0.0);
     }
     Vec3 dv = Vec3::Zero();
     for (const Pair& pair : pairs_) dv += (dt_kick * pair.force / m_d) * pair.n;
-    // The dashpots' dissipation (f - k overlap) times the approach speed at the middle of the kick,
-    // so that the heat is what the kick takes from the pair's relative motion, not its first-order
-    // estimate (which overshoots by the square of the kick).
+    // The heat: the work the kick takes from the pair's relative motion (the force times the approach
+    // speed at the middle of the kick, exact for the debris' kinetic energy) less what the spring
+    // stores by the end of the step, where the overlap will be (overlap + u' dt), u' the approach
+    // speed the kick leaves.
     double heat = 0.0;
     for (const Pair& pair : pairs_) {
       const LocalIndex a = pair.node;
       const double node_dv = dt_kick * pair.force / nodes.mass[a];
-      const double approach_mid = pair.approach - 0.5 * (dv.dot(pair.n) + node_dv);
-      heat += (pair.force - pair.spring) * approach_mid * dt_kick;
+      const double approach_after = pair.approach - (dv.dot(pair.n) + node_dv);
+      const double overlap = pair.spring / pair.k;
+      const double overlap_after = std::max(overlap + approach_after * dt_kick, 0.0);
+      heat += pair.force * 0.5 * (pair.approach + approach_after) * dt_kick -
+              0.5 * pair.k * (overlap_after * overlap_after - overlap * overlap);
       nodes.force[a] -= pair.force * pair.n;
     }
     points.v[d] += dv;
     points.energy[d] += heat / m_d;
     points.strike(d, nodes.body[pairs_.front().node]);
   }
-  // Each node's springs together, as each debris point's above.
+  // Each node's springs together: many debris points may strike one node in a step.
   for (const LocalIndex a : touched_) {
     step_bound_ = std::min(step_bound_, std::sqrt(nodes.mass[a] / node_stiffness_[a]));
     node_stiffness_[a] = 0.0;

@@ -41,9 +41,9 @@ class DebrisContact {
   // The energy the contact springs store in the configuration apply() last saw, J.
   double storedEnergy() const { return stored_; }
   // The longest step the contact allows, before the integrator's cfl: the time a debris point takes
-  // to cross its contact radius relative to a node it approaches, and 1/omega of the springs of each
-  // debris point and of each node together, counting the pairs that may touch within the next step
-  // (the dashpot is implicit and needs no bound); infinity where no debris is near a body it may hit.
+  // to cross its contact radius relative to a node it approaches, and 1/omega of each node's springs
+  // together, counting the pairs that may touch within the next step (each pair's spring and dashpot
+  // are implicit and need no bound of their own); infinity where no debris is near a body it may hit.
   double stepBound() const { return step_bound_; }
 
  private:
@@ -57,6 +57,7 @@ class DebrisContact {
   };
   CellList cells_;
   std::vector<Pair> pairs_;           // of the debris point in hand
+  // Found on the first call (bodies do not change during a run):
   std::vector<double> body_spacing_;  // mean reference spacing of each body's points
   std::vector<double> body_modulus_;  // rho0 c0^2 of each body's material
   // Per node, the stiffness of its pairs this step (zero outside touched_).
