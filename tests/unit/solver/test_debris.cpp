@@ -1,7 +1,8 @@
 // Debris contact (solver/otm/debris.hpp): a block of debris (eroded points) flies onto a wall at
-// rest. A wall the debris may hit stops it without letting it in: the debris stays in front of the
-// wall, bounces off slowly (nearly inelastic), the wall takes its momentum, the total momentum is
-// exact, and kinetic + internal + stored energy is kept up to the time integration. A wall the debris
+// rest. A wall the debris may hit stops it without letting it through: at 1 km/s the debris stays in
+// front of the wall, at 4 km/s it craters it; it is left slow (nearly inelastic), the wall takes its
+// momentum, the total momentum is exact, and kinetic + internal + stored energy is kept up to the
+// time integration. Debris is pushed, never pulled. A wall the debris
 // passes through (one its body touched, or contact off) is not touched at all: the debris flies
 // exactly ballistically and the wall stays bitwise at rest.
 #include "geometry/structured_mesh.hpp"
