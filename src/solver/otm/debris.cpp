@@ -18,6 +18,12 @@ std::uint64_t bodyBit(int body) {
 // lets go at t = 2 / omega with e^-2 of the approach speed (restitution 0.14).
 constexpr double damping_ratio = 1.0;
 
+// A node lighter than this share of its body's mass per node carries no material a strike could
+// meet: LME lumps a ten-thousandth of the others' mass, or less, on a few surface nodes. Debris does
+// not strike those; kicking one (its Delta v as large as the debris' own) broke the energy of a
+// strike, and bounding the step by its springs collapsed the step.
+constexpr double least_struck_node_mass = 0.1;
+
 }  // namespace
 
 void markNewDebris(Model& model) {
@@ -42,6 +48,11 @@ void recordContacts(Model& model, std::span<const std::uint64_t> touching) {
         model.bodies[b].touched |= bodyBit(static_cast<int>(a));
       }
   }
+}
+
+double DebrisContact::stiffness(double h_a, double modulus_a, double h_b, double modulus_b) {
+  const double h_min = std::min(h_a, h_b);
+  return h_min * h_min / (0.5 * h_a / modulus_a + 0.5 * h_b / modulus_b);
 }
 
 void DebrisContact::apply(Model& model, double dt_kick) {
@@ -76,38 +87,46 @@ void DebrisContact::apply(Model& model, double dt_kick) {
       const double c = material.referenceSoundSpeed();
       body_modulus_[b] = material.referenceDensity() * c * c;
     }
+    // And its mass per node (both constant, so a restarted run finds the same).
+    body_node_mass_.assign(bodies, 0.0);
+    std::vector<double> count(bodies, 0.0);
+    for (LocalIndex a = 0; a < nodes.owned; ++a) count[static_cast<std::size_t>(nodes.body[a])] += 1.0;
+    for (LocalIndex p = 0; p < points.owned; ++p)
+      body_node_mass_[static_cast<std::size_t>(points.body[p])] += points.mass[p];
+    for (std::size_t b = 0; b < bodies; ++b)
+      if (count[b] > 0.0) body_node_mass_[b] /= count[b];
   }
   const double largest = *std::max_element(body_spacing_.begin(), body_spacing_.end());
   cells_.build(nodes.x, nodes.size(), std::max(largest, 1e-300));
+  node_pairs_.resize(static_cast<std::size_t>(nodes.size()), 0);
+  node_dv_.resize(static_cast<std::size_t>(nodes.size()), Vec3::Zero());
   node_stiffness_.resize(static_cast<std::size_t>(nodes.size()), 0.0);
   touched_.clear();
 
+  // The pairs of every flying debris point first, so that each node knows how many it has.
+  pairs_.clear();
+  strikes_.clear();
   for (LocalIndex d = 0; d < points.owned; ++d) {
     if (!flying(d)) continue;
     const auto passes = static_cast<std::uint64_t>(points.passes_through[d]);
-    const int own = points.body[d];
     const double h_d = points.spacing0[d];
-    const double modulus_d = body_modulus_[static_cast<std::size_t>(own)];
+    const double modulus_d = body_modulus_[static_cast<std::size_t>(points.body[d])];
     const double m_d = points.mass[d];
-    const double speed = points.v[d].norm();
     // Twice the largest contact radius, and what the point flies in two steps: every node it may
     // meet within the next step is seen, and bounds the step.
-    const double reach = (h_d + largest) + 2.0 * speed * dt_kick;
-    pairs_.clear();
+    const double reach = (h_d + largest) + 2.0 * points.v[d].norm() * dt_kick;
+    const std::size_t begin = pairs_.size();
     cells_.forEachWithin(points.x[d], reach, [&](LocalIndex a, double d2) {
       const int b = nodes.body[a];
-      if (nodes.mass[a] <= 0.0 || ((passes >> b) & 1u)) return;
+      if (((passes >> b) & 1u) || nodes.mass[a] < least_struck_node_mass * body_node_mass_[static_cast<std::size_t>(b)])
+        return;
       const double h_b = body_spacing_[static_cast<std::size_t>(b)];
       const double radius = 0.5 * (h_d + h_b);
       const double dist = std::sqrt(d2);
       const Vec3 v_a = nodes.momentum[a] / nodes.mass[a];
       const Vec3 relative = points.v[d] - v_a;
       if (dist > 0.0 && relative.norm() > 0.0) step_bound_ = std::min(step_bound_, radius / relative.norm());
-      const double h_min = std::min(h_d, h_b);
-      // The debris' half and the body's half in series, over the smaller face.
-      const double k = h_min * h_min / (0.5 * h_d / modulus_d + 0.5 * h_b / body_modulus_[static_cast<std::size_t>(b)]);
-      const double m_reduced = m_d * nodes.mass[a] / (m_d + nodes.mass[a]);
-      const double c = 2.0 * damping_ratio * std::sqrt(k * m_reduced);
+      const double k = stiffness(h_d, modulus_d, h_b, body_modulus_[static_cast<std::size_t>(b)]);
       // A node's pairs that may touch within the next step count in its bound already: the first
       // step of a contact must resolve it too. The travel bound keeps a pair from closing by more
       // than cfl (< 1/2) of its radius in a step, so those within 1.5 radii are the ones.
@@ -123,49 +142,67 @@ void DebrisContact::apply(Model& model, double dt_kick) {
       pair.approach = -relative.dot(pair.n);
       pair.spring = k * overlap;
       pair.k = k;
-      pair.c = c;
-      pair.m = m_reduced;
+      pair.m = m_d * nodes.mass[a] / (m_d + nodes.mass[a]);
+      pair.c = 2.0 * damping_ratio * std::sqrt(k * pair.m);
       stored_ += 0.5 * k * overlap * overlap;
+      ++node_pairs_[static_cast<std::size_t>(a)];
       pairs_.push_back(pair);
     });
-    if (pairs_.empty()) continue;
-    // Each pair's force from the approach speed u' it leaves after the kick. Spring and dashpot act
-    // on the state at the end of the step (implicit, u' = u - (k (overlap + u' dt) + c u') dt / m), so
-    // that no step, however long, lets the pair overshoot (the debris point's own springs need no
-    // step bound), with each of the debris point's n pairs stopping a share m / n of it; and no kick
-    // gives the pair more speed apart than its spring's energy could, sqrt(k / m) overlap.
-    const double share = 1.0 / static_cast<double>(pairs_.size());
-    for (Pair& pair : pairs_) {
-      const double m = share * pair.m;
+    if (pairs_.size() > begin) strikes_.push_back(Strike{d, begin, pairs_.size()});
+  }
+  // Each pair's force from the approach speed u' it leaves after the kick. Spring and dashpot act
+  // on the state at the end of the step (implicit, u' = u - (k (overlap + u' dt) + c u') dt / m), so
+  // that no step, however long, lets the pair overshoot, with each pair stopping a share m / n of its
+  // reduced mass's motion, n the larger of its debris point's and its node's numbers of pairs: the
+  // pairs of one debris point, or of one node struck by many, cannot together stop more than its
+  // motion, and neither needs a bound on the step. No kick gives the pair more speed apart than its
+  // spring's energy could, sqrt(k / m) overlap.
+  for (Strike& strike : strikes_) {
+    const double m_d = points.mass[strike.debris];
+    const auto own = static_cast<int>(strike.end - strike.begin);
+    const std::span<Pair> pairs(pairs_.data() + strike.begin, strike.end - strike.begin);
+    for (Pair& pair : pairs) {
+      const double m = pair.m / static_cast<double>(std::max(own, node_pairs_[static_cast<std::size_t>(pair.node)]));
       const double rate = dt_kick / m;
       double approach_after = (pair.approach - pair.spring * rate) / (1.0 + (pair.c + pair.k * dt_kick) * rate);
       approach_after = std::max(approach_after, -std::sqrt(pair.spring * pair.spring / (pair.k * m)));
       pair.force = std::max(m * (pair.approach - approach_after) / dt_kick, 0.0);
+      strike.dv += (dt_kick * pair.force / m_d) * pair.n;
+      node_dv_[static_cast<std::size_t>(pair.node)] -= (dt_kick * pair.force / nodes.mass[pair.node]) * pair.n;
     }
-    Vec3 dv = Vec3::Zero();
-    for (const Pair& pair : pairs_) dv += (dt_kick * pair.force / m_d) * pair.n;
-    // The heat: the work the kick takes from the pair's relative motion (the force times the approach
-    // speed at the middle of the kick, exact for the debris' kinetic energy) less what the spring
-    // stores by the end of the step, where the overlap will be (overlap + u' dt), u' the approach
-    // speed the kick leaves.
+  }
+  // The heat: the work the kick takes from each pair's relative motion (the force times the approach
+  // speed at the middle of the kick, from the kicks of all the pairs of the debris point and of the
+  // node) less what the spring stores by the end of the step, where the overlap will be
+  // (overlap + u' dt), u' the approach speed the kicks leave.
+  for (const Strike& strike : strikes_) {
+    const LocalIndex d = strike.debris;
+    const std::span<const Pair> pairs(pairs_.data() + strike.begin, strike.end - strike.begin);
     double heat = 0.0;
-    for (const Pair& pair : pairs_) {
+    for (const Pair& pair : pairs) {
       const LocalIndex a = pair.node;
-      const double node_dv = dt_kick * pair.force / nodes.mass[a];
-      const double approach_after = pair.approach - (dv.dot(pair.n) + node_dv);
+      const double approach_after = pair.approach - (strike.dv - node_dv_[static_cast<std::size_t>(a)]).dot(pair.n);
       const double overlap = pair.spring / pair.k;
       const double overlap_after = std::max(overlap + approach_after * dt_kick, 0.0);
       heat += pair.force * 0.5 * (pair.approach + approach_after) * dt_kick -
               0.5 * pair.k * (overlap_after * overlap_after - overlap * overlap);
       nodes.force[a] -= pair.force * pair.n;
     }
-    points.v[d] += dv;
-    points.energy[d] += heat / m_d;
-    points.strike(d, nodes.body[pairs_.front().node]);
+    points.v[d] += strike.dv;
+    points.energy[d] += heat / points.mass[d];
+    points.strike(d, nodes.body[pairs.front().node]);
   }
-  // Each node's springs together: many debris points may strike one node in a step.
+  for (const Pair& pair : pairs_) {
+    node_pairs_[static_cast<std::size_t>(pair.node)] = 0;
+    node_dv_[static_cast<std::size_t>(pair.node)].setZero();
+  }
+  // Each node's springs together, with its body's mass per node: many debris points may strike one
+  // node in a step. (The shares above keep a node from being overshot at any step; this bound keeps
+  // a strike's energy. A node's own mass, which may be a tenth of that, would cost steps for no
+  // accuracy.)
   for (const LocalIndex a : touched_) {
-    step_bound_ = std::min(step_bound_, std::sqrt(nodes.mass[a] / node_stiffness_[a]));
+    const double mass = body_node_mass_[static_cast<std::size_t>(nodes.body[a])];
+    step_bound_ = std::min(step_bound_, std::sqrt(mass / node_stiffness_[a]));
     node_stiffness_[a] = 0.0;
   }
 }

@@ -42,11 +42,15 @@ class DebrisContact {
   double storedEnergy() const { return stored_; }
   // The longest step the contact allows, before the integrator's cfl: the time a debris point takes
   // to cross its contact radius relative to a node it approaches, and 1/omega of each node's springs
-  // together, counting the pairs that may touch within the next step (each pair's spring and dashpot
-  // are implicit and need no bound of their own); infinity where no debris is near a body it may hit.
+  // together with its body's mass per node, counting the pairs that may touch within the next step
+  // (each pair's spring and dashpot are implicit and need no bound of their own); infinity where no
+  // debris is near a body it may hit.
   double stepBound() const { return step_bound_; }
 
  private:
+  // The pair's spring for spacings h and moduli K: each half in series over the smaller face.
+  static double stiffness(double h_a, double modulus_a, double h_b, double modulus_b);
+
   struct Pair {
     LocalIndex node = 0;
     Vec3 n = Vec3::Zero();             // unit vector from the node to the debris point
@@ -55,12 +59,21 @@ class DebrisContact {
     double k = 0.0, c = 0.0, m = 0.0;  // stiffness, damping coefficient, reduced mass
     double force = 0.0;                // spring plus dashpot, never pulling
   };
+  struct Strike {
+    LocalIndex debris = 0;
+    std::size_t begin = 0, end = 0;  // its pairs in pairs_
+    Vec3 dv = Vec3::Zero();          // the kick its pairs give it
+  };
   CellList cells_;
-  std::vector<Pair> pairs_;           // of the debris point in hand
+  std::vector<Pair> pairs_;  // this step's debris-node pairs, by debris point
+  std::vector<Strike> strikes_;
   // Found on the first call (bodies do not change during a run):
-  std::vector<double> body_spacing_;  // mean reference spacing of each body's points
-  std::vector<double> body_modulus_;  // rho0 c0^2 of each body's material
-  // Per node, the stiffness of its pairs this step (zero outside touched_).
+  std::vector<double> body_spacing_;    // mean reference spacing of each body's points
+  std::vector<double> body_modulus_;    // rho0 c0^2 of each body's material
+  std::vector<double> body_node_mass_;  // each body's mass over its number of nodes
+  std::vector<int> node_pairs_;         // per node, its pairs this step (zero between steps)
+  std::vector<Vec3> node_dv_;           // per node, the kick of its pairs (zero between steps)
+  // Per node, the stiffness of its pairs that may touch within the step (zero outside touched_).
   std::vector<double> node_stiffness_;
   std::vector<LocalIndex> touched_;
   double stored_ = 0.0;

@@ -2,9 +2,9 @@
 // rest. A wall the debris may hit stops it without letting it through: at 1 km/s the debris stays in
 // front of the wall, at 4 km/s it craters it; it is left slow (nearly inelastic), the wall takes its
 // momentum, the total momentum is exact, and kinetic + internal + stored energy is kept up to the
-// time integration. Debris is pushed, never pulled. A wall the debris
-// passes through (one its body touched, or contact off) is not touched at all: the debris flies
-// exactly ballistically and the wall stays bitwise at rest.
+// time integration, in a number of steps that no light node of the wall sets. Debris is pushed,
+// never pulled. A wall the debris passes through (one its body touched, or contact off) is not
+// touched at all: the debris flies exactly ballistically and the wall stays bitwise at rest.
 #include "geometry/structured_mesh.hpp"
 #include "material/impact_material.hpp"
 #include "material/library.hpp"
@@ -46,12 +46,13 @@ struct Flight {
   Model model;
   Energies initial;
   Energies final;
+  long steps = 0;
 };
 
 // Marks the debris (with the bodies it passes through) and runs 3 us: enough for the debris to
 // cross the 2 mm gap (more than its contact radius) and strike the wall.
 Flight fly(const Settings& base, bool wall_touched, double debris_speed = speed) {
-  Flight f{debrisOntoWall(), {}, {}};
+  Flight f{debrisOntoWall(), {}, {}, 0};
   for (LocalIndex p = 0; p < f.model.points.owned; ++p)
     if (f.model.points.body[p] == debris_body) f.model.points.v[p] = Vec3(0, 0, -debris_speed);
   if (wall_touched) f.model.bodies[debris_body].touched = std::uint64_t{1} << wall_body;
@@ -63,6 +64,7 @@ Flight fly(const Settings& base, bool wall_touched, double debris_speed = speed)
   f.initial = integrator.energies();
   while (!integrator.finished()) integrator.step();
   f.final = integrator.energies();
+  f.steps = integrator.steps();
   return f;
 }
 
@@ -92,6 +94,10 @@ TEST(DebrisContact, AWallTheDebrisMayHitStopsItAndTakesItsMomentum) {
     // integration's error.
     EXPECT_NEAR(f.final.total(), f.initial.total(), 0.06 * f.initial.total());
     EXPECT_GT(f.final.internal, 0.3 * f.initial.kinetic);  // a nearly inelastic strike heats
+    // The strike costs steps, but the wall's nodes do not set them by their own lumped masses
+    // (which LME makes uneven at a surface): bounded by those, the 4 km/s strike took 1,266 steps
+    // (380 with the body's mass per node; 51 without a strike).
+    EXPECT_LT(f.steps, 1000);
   }
 }
 
