@@ -24,6 +24,12 @@ constexpr double damping_ratio = 1.0;
 // strike, and bounding the step by its springs collapsed the step.
 constexpr double least_struck_node_mass = 0.1;
 
+// A pair's spring for spacings h and moduli K: the two halves in series over the smaller face.
+double stiffness(double h_a, double modulus_a, double h_b, double modulus_b) {
+  const double h_min = std::min(h_a, h_b);
+  return h_min * h_min / (0.5 * h_a / modulus_a + 0.5 * h_b / modulus_b);
+}
+
 }  // namespace
 
 void markNewDebris(Model& model) {
@@ -48,11 +54,6 @@ void recordContacts(Model& model, std::span<const std::uint64_t> touching) {
         model.bodies[b].touched |= bodyBit(static_cast<int>(a));
       }
   }
-}
-
-double DebrisContact::stiffness(double h_a, double modulus_a, double h_b, double modulus_b) {
-  const double h_min = std::min(h_a, h_b);
-  return h_min * h_min / (0.5 * h_a / modulus_a + 0.5 * h_b / modulus_b);
 }
 
 void DebrisContact::apply(Model& model, double dt_kick) {

@@ -48,9 +48,6 @@ class DebrisContact {
   double stepBound() const { return step_bound_; }
 
  private:
-  // The pair's spring for spacings h and moduli K: each half in series over the smaller face.
-  static double stiffness(double h_a, double modulus_a, double h_b, double modulus_b);
-
   struct Pair {
     LocalIndex node = 0;
     Vec3 n = Vec3::Zero();             // unit vector from the node to the debris point
