@@ -264,6 +264,11 @@ void Run::printSummary() const {
             e1.kinetic, e0.internal, e1.internal, e0.total(), e1.total());
   log::info("momentum: ({:.6g}, {:.6g}, {:.6g}) -> ({:.6g}, {:.6g}, {:.6g}) kg m/s", e0.momentum[0], e0.momentum[1],
             e0.momentum[2], e1.momentum[0], e1.momentum[1], e1.momentum[2]);
+  if (integrator_->tornPoints() > 0)
+    log::info(
+        "torn from their bodies: {} intact point(s), {:.3g} g, outside the hull of every neighbourhood of "
+        "their nodes, released as debris (docs/theory.md §8)",
+        integrator_->tornPoints(), 1e3 * integrator_->tornMass());
   log::info("results in {}/ (points.xdmf and nodes.xdmf open in ParaView; summary.json, history.csv)", dir_.string());
 }
 

@@ -67,6 +67,10 @@ class Integrator {
   double time() const { return time_; }
   long steps() const { return steps_; }
   LocalIndex erodedPoints() const { return eroded_; }
+  // Intact points released because no neighbourhood enclosed them (torn from their body, since
+  // this process started: not kept across a restart), and their mass.
+  LocalIndex tornPoints() const { return neighbourhoods_.tornPoints(); }
+  double tornMass() const { return neighbourhoods_.tornMass(); }
   double lastStep() const { return dt_last_; }
   double nextStep() const { return dt_next_; }
   double initialStep() const { return dt_initial_; }

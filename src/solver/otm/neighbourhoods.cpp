@@ -197,6 +197,15 @@ void Neighbourhoods::retryPoints(Model& model) {
         best_attempt = i;
       }
     }
+    // An intact point outside the hull of every neighbourhood tried (the nodes around it have moved
+    // more than three supports away) has torn from its body: it fails and leaves with the failed.
+    const bool torn =
+        !points.failed(p) && best_attempt < 0 && r.status == lme::Status::outside_hull && points.x[p].allFinite();
+    if (torn) {
+      points.fail(p);
+      ++torn_;
+      torn_mass_ += points.mass[p];
+    }
     if (r.status != lme::Status::converged && points.failed(p)) {
       // Failed material outside the hull of every neighbourhood (or at its very edge) is leaving
       // its body: released to fly on (a zero row), with the velocity it has.

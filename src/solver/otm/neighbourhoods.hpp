@@ -24,6 +24,10 @@ class Neighbourhoods {
   // Time spent in the search and in the shape functions during the last update.
   double searchSeconds() const { return search_seconds_; }
   double shapeSeconds() const { return shape_seconds_; }
+  // Intact points released so far because they lay outside the hull of every neighbourhood tried
+  // (torn from their body; retryPoints), and their mass.
+  LocalIndex tornPoints() const { return torn_; }
+  double tornMass() const { return torn_mass_; }
 
  private:
   struct Scratch {
@@ -59,7 +63,8 @@ class Neighbourhoods {
   lme::Result shapeFunctionsAt(Model& model, LocalIndex p, std::span<const LocalIndex> row, std::span<double> N,
                                std::span<Vec3> dN, Scratch& s, double h, double gamma_scale = 1.0) const;
   // Retries the points whose shape functions failed or are ill-conditioned with larger radii and
-  // smoother supports; throws if an intact point still fails.
+  // smoother supports; an intact point outside the hull of every attempt is torn (fails and is
+  // released); throws if an intact point's shape functions still fail otherwise.
   void retryPoints(Model& model);
 
   Settings settings_;
@@ -76,6 +81,8 @@ class Neighbourhoods {
   std::vector<double> spacing_;          // per point: its support size h this step (a cube root each)
   double cutoff_per_spacing_ = 0.0;      // the LME cut-off radius over h (a logarithm and a root)
   double search_seconds_ = 0.0, shape_seconds_ = 0.0;
+  LocalIndex torn_ = 0;
+  double torn_mass_ = 0.0;
 };
 
 }  // namespace kessler::otm

@@ -3,8 +3,8 @@
 // the inverse. The neighbourhoods retry it with wider, smoother supports and keep the
 // best-conditioned; its gradients are then smaller than its first support's (so the test fails
 // without the retry), and still a partition of unity that reproduces a linear field.
-#include "approx/lme.hpp"
 #include "../blocks.hpp"
+#include "approx/lme.hpp"
 #include "solver/otm/neighbourhoods.hpp"
 
 #include <gtest/gtest.h>
@@ -64,6 +64,33 @@ TEST(Conditioning, AnIntactPointAtTheEdgeOfItsHullTakesItsBestConditionedSupport
   EXPECT_NEAR(sum, 1.0, 1e-9);
   EXPECT_LT((position - points.x[p]).norm(), 1e-9 * h);
   EXPECT_LT((identity - Mat3::Identity()).norm(), 1e-6);
+}
+
+// An intact point that no neighbourhood encloses, however wide (here half a spacing below the bottom
+// face of its block: outside the hull of all its body's nodes), has torn from its body. It is
+// released as debris with a zero row and no stress, and counted, instead of stopping the run.
+TEST(Conditioning, AnIntactPointOutsideTheHullOfEveryNeighbourhoodIsTornAndReleased) {
+  Model model;
+  testing::addBlock(model, "block", geometry::Box{Vec3::Zero(), Vec3(4 * h, 4 * h, 4 * h)}, {4, 4, 4});
+  PointStore& points = model.points;
+  LocalIndex p = 0;
+  for (LocalIndex q = 1; q < points.owned; ++q)
+    if ((points.x[q] - Vec3(2 * h, 2 * h, 0)).norm() < (points.x[p] - Vec3(2 * h, 2 * h, 0)).norm()) p = q;
+  points.x[p] = Vec3(points.x[p][0], points.x[p][1], -0.5 * h);
+  points.stress[p] = -1e8 * Mat3::Identity();
+
+  Neighbourhoods neighbourhoods{Settings{}};
+  ASSERT_NO_THROW(neighbourhoods.update(model));
+  EXPECT_TRUE(points.debris(p));
+  EXPECT_EQ(points.stress[p], Mat3::Zero());
+  const Connectivity& conn = model.connectivity;
+  for (Index k = conn.offset[p]; k < conn.offset[p + 1]; ++k) EXPECT_EQ(conn.N[k], 0.0);
+  EXPECT_EQ(neighbourhoods.tornPoints(), 1);
+  EXPECT_DOUBLE_EQ(neighbourhoods.tornMass(), points.mass[p]);
+  for (LocalIndex q = 0; q < points.owned; ++q)
+    if (q != p) {
+      EXPECT_FALSE(points.eroded[q]) << "point " << q;
+    }
 }
 
 }  // namespace
