@@ -28,6 +28,13 @@ double ImpactMaterial::referenceSoundSpeed() const {
   return std::sqrt(s.sound_speed2 + 4.0 * p_.shear_modulus / (3.0 * rho0));
 }
 
+double ImpactMaterial::tensileLimit() const {
+  double limit = std::numeric_limits<double>::infinity();
+  if (p_.spall_strength > 0.0) limit = p_.spall_strength;
+  if (std::isfinite(p_.pressure_floor)) limit = std::min(limit, std::max(-p_.pressure_floor, 0.0));
+  return limit;
+}
+
 double ImpactMaterial::poissonRatio() const {
   // From the bulk modulus of the reference state and the shear modulus: nu = (3K - 2G)/(6K + 2G).
   const double rho0 = referenceDensity();

@@ -57,6 +57,7 @@ class ImpactMaterial final : public Material {
   double referenceDensity() const override { return eos::referenceDensity(p_.eos); }
   double referenceSoundSpeed() const override;
   double fractureEnergy() const override { return p_.fracture_energy; }
+  double tensileLimit() const override;
   double poissonRatio() const override;
   void initialise(PointStore& points, LocalIndex begin, LocalIndex end) const override;
   void update(PointStore& points, LocalIndex begin, LocalIndex end, double dt) const override;

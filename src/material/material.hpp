@@ -6,6 +6,7 @@
 #include "core/types.hpp"
 #include "particles/store.hpp"
 
+#include <limits>
 #include <memory>
 #include <span>
 #include <string>
@@ -23,6 +24,10 @@ class Material {
   virtual double poissonRatio() const = 0;
   // Longitudinal wave speed of the undeformed material, sqrt((K + 4G/3)/rho0).
   virtual double referenceSoundSpeed() const = 0;
+  // The largest mean tension an intact point of the material bears, Pa (its spall strength or
+  // tension cut-off; infinity if it has neither): the solver's numerical pressures may not pull an
+  // intact point harder than this (docs/theory.md §4).
+  virtual double tensileLimit() const { return std::numeric_limits<double>::infinity(); }
   // Sets the initial state of the points [begin, end) (temperature, internal variables).
   virtual void initialise(PointStore& /*points*/, LocalIndex /*begin*/, LocalIndex /*end*/) const {}
   // Updates the points [begin, end) after their F has been advanced by dF over dt.

@@ -58,7 +58,9 @@ Plateau measure(const otm::Model& model, const std::vector<double>& z0_by_id, do
     out_slab.pressure += m * (-points.stress[p].trace() / 3.0 - points.viscous_pressure[p]);
     out_slab.viscous_pressure += m * points.viscous_pressure[p];
     out_slab.energy += m * points.energy[p];
-    out_slab.stabilisation_pressure += m * otm::stabilisationPressure(points, p, alpha);
+    out_slab.stabilisation_pressure +=
+        m * otm::stabilisationPressure(points, p, alpha,
+                                       model.materials[model.bodies[points.body[p]].material]->tensileLimit());
   }
   for (int s = 0; s < slabs; ++s) {
     Slab& out_slab = out.slabs[static_cast<std::size_t>(s)];

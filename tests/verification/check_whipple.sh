@@ -7,12 +7,10 @@
 #     compression, the 5 mm sphere's debris crossed the bumper through a 4 mm hole: docs/theory.md
 #     §8), and for the 5 mm sphere (t/d = 0.39) at most 4 d;
 #   - the debris cloud reaches the rear wall (debris has struck it);
-#   - the 2 mm sphere (0.6 of the critical diameter) leaves the rear wall without perforation or
-#     detached spall, as Christiansen's equation says.
-# Not checked, and printed instead: the 5 mm sphere's rear-wall damage. Christiansen's equation says
-# the wall fails (1.5 times the critical diameter); the simulated 1 mm wall holds, struck by the debris
-# cloud as matter since 2026-11-26 but still too weakly (docs/validation.md: the open problem of the
-# rear wall).
+#   - the rear wall fails (detached spall or perforation) behind the 5 mm sphere (1.5 times the
+#     critical diameter) and holds behind the 2 mm sphere (0.6 of it), as Christiansen's equation
+#     says. The 5 mm sphere's wall held until the stabilisation's tension was limited to what the
+#     material bears (2026-11-27; docs/validation.md, the rear wall), so this check can fail.
 set -euo pipefail
 kessler=$1 python=$2 deck=$3 out=$4
 rm -rf "$out"
@@ -49,6 +47,8 @@ for path, expected in ((sys.argv[1], "perforation"), (sys.argv[2], "none")):
         failures.append(f"d = {d*1e3:.2f} mm: no debris reached the rear wall")
     if expected == "none" and wall["failed"]:
         failures.append(f"d = {d*1e3:.2f} mm: rear wall {wall['classification']}, expected it to hold")
+    if expected == "perforation" and not wall["failed"]:
+        failures.append(f"d = {d*1e3:.2f} mm: rear wall {wall['classification']}, expected it to fail")
 if failures:
     print("FAIL: " + "; ".join(failures))
     sys.exit(1)

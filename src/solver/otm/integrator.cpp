@@ -21,6 +21,9 @@ Integrator::Integrator(Model& model, const Settings& settings)
     : model_(model), settings_(settings), neighbourhoods_(settings), erosion_(settings), release_(settings) {
   KESSLER_VERIFY(settings.cfl > 0.0 && settings.cfl <= 1.0, "cfl must lie in (0, 1], got {}", settings.cfl);
   KESSLER_VERIFY(settings.end_time > 0.0, "end_time must be positive, got {}", settings.end_time);
+  std::vector<double> limits;
+  for (const BodyInfo& body : model_.bodies) limits.push_back(model_.materials[body.material]->tensileLimit());
+  patch_.setTensileLimits(std::move(limits));
 }
 
 void Integrator::initialise() {
@@ -124,7 +127,7 @@ void Integrator::assembleNodes() {
     otm::assembleNodes(model_.connectivity, model_.points, model_.nodes, loads_);
     return;
   }
-  VolumePatch::stabilisationPressures(model_.points, settings_.volume_stabilisation, stabilisation_pressure_);
+  patch_.stabilisationPressures(model_.points, settings_.volume_stabilisation, stabilisation_pressure_);
   otm::assembleNodes(model_.connectivity, model_.points, model_.nodes, loads_, &stabilisation_pressure_);
 }
 

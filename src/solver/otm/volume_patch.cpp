@@ -12,24 +12,33 @@ double christensenLimiter(double mean_ratio, double min_ratio) {
   return std::clamp(std::min(mean_ratio, 2.0 * min_ratio), 0.0, 1.0);
 }
 
-double stabilisationPressure(const PointStore& points, LocalIndex p, double alpha) {
+double stabilisationPressure(const PointStore& points, LocalIndex p, double alpha, double tensile_limit) {
   const double c = points.sound_speed[p];
   const double pressure = -alpha * points.density(p) * c * c * points.volume_defect[p];
   // Failed material bears compression only (docs/theory.md §8): its stabilisation too.
-  return points.eroded[p] ? std::max(pressure, 0.0) : pressure;
+  if (points.eroded[p]) return std::max(pressure, 0.0);
+  if (!(tensile_limit < std::numeric_limits<double>::infinity())) return pressure;
+  const double own = -points.stress[p].trace() / 3.0;  // the point's pressure, its viscosity included
+  return std::max(pressure, -(own + tensile_limit));
+}
+
+double VolumePatch::pressure(const PointStore& points, LocalIndex p, double alpha) const {
+  const auto body = static_cast<std::size_t>(points.body[p]);
+  return stabilisationPressure(points, p, alpha,
+                               body < limits_.size() ? limits_[body] : std::numeric_limits<double>::infinity());
 }
 
 // The defect relaxes as exp(-t c / (k h)), over k transits of a wave across the point's spacing h
 // (docs/theory.md §4): the stabilisation resists a mode that builds up over many steps, not a
 // volume change the patch has kept for k transits. The energy the relaxed defect stored, -S V d / 2
 // before less after, is released (the compatible energy update makes it the point's heat).
-double VolumePatch::relax(PointStore& points, LocalIndex p, double alpha, double dt_per_transits) {
+double VolumePatch::relax(PointStore& points, LocalIndex p, double alpha, double dt_per_transits) const {
   double& defect = points.volume_defect[p];
   const double h = points.spacing(p);
   if (defect == 0.0 || !(h > 0.0)) return 0.0;
-  const double before = -0.5 * stabilisationPressure(points, p, alpha) * points.volume[p] * defect;
+  const double before = -0.5 * pressure(points, p, alpha) * points.volume[p] * defect;
   defect *= std::exp(-dt_per_transits * points.sound_speed[p] / h);
-  const double after = -0.5 * stabilisationPressure(points, p, alpha) * points.volume[p] * defect;
+  const double after = -0.5 * pressure(points, p, alpha) * points.volume[p] * defect;
   return before - after;
 }
 
@@ -103,7 +112,7 @@ double VolumePatch::apply(const Connectivity& conn, LocalIndex owned_nodes, bool
     // Intact points only: a failed point's compression-only stabilisation keeps the debris at a
     // contact from overcompressing (docs/theory.md §4), and relaxed it let them heat and overshoot.
     if (alpha > 0.0 && relaxation > 0.0 && !points.eroded[p]) work_[p] = -relax(points, p, alpha, dt / relaxation);
-    if (alpha > 0.0) work_[p] += -0.5 * stabilisationPressure(points, p, alpha) * points.volume[p] * defect_step;
+    if (alpha > 0.0) work_[p] += -0.5 * pressure(points, p, alpha) * points.volume[p] * defect_step;
     points.volume_defect[p] += defect_step;
     signal2_[p] = points.sound_speed[p] * points.sound_speed[p];
     points.dF[p] *= std::exp((average - own) / 3.0);
@@ -116,14 +125,17 @@ double VolumePatch::closeStep(const PointStore& points, double alpha) {
   if (!(alpha > 0.0) || defect_step_.size() != static_cast<std::size_t>(points.owned)) return 0.0;
   return deterministicSum(points.owned, 0.0, [&](LocalIndex p) {
     if (points.debris(p)) return 0.0;
-    double second = -0.5 * stabilisationPressure(points, p, alpha) * points.volume[p] * defect_step_[p];
+    double second = -0.5 * pressure(points, p, alpha) * points.volume[p] * defect_step_[p];
     // The material update changed the stiffness alpha m c^2 under the defect it stores: the stored
     // energy -S V d / 2 = alpha m c^2 d^2 / 2 changes by alpha m d^2 (c_new^2 - c_old^2) / 2, booked
     // as stored and so taken from the point's heat (the compatible energy update). Unbooked, a point
     // heated at a fixed defect gives back more than it stored (docs/theory.md §4). Only with the
     // relaxation: alone it takes hugoniot-3d from P -2.79% to -3.00% (docs/validation.md).
     const double d = points.volume_defect[p];
-    if (rebook_ && signal2_[p] > 0.0 && !points.eroded[p]) {
+    // Not for a point its tensile limit holds: its stored energy, -S V d / 2, follows its own
+    // pressure there, not c^2.
+    if (rebook_ && signal2_[p] > 0.0 && !points.eroded[p] &&
+        pressure(points, p, alpha) == stabilisationPressure(points, p, alpha)) {
       const double c = points.sound_speed[p];
       second += 0.5 * alpha * points.mass[p] * d * d * (c * c - signal2_[p]);
     }
@@ -132,11 +144,11 @@ double VolumePatch::closeStep(const PointStore& points, double alpha) {
   });
 }
 
-void VolumePatch::stabilisationPressures(const PointStore& points, double alpha, std::vector<double>& s) {
+void VolumePatch::stabilisationPressures(const PointStore& points, double alpha, std::vector<double>& s) const {
   s.resize(static_cast<std::size_t>(points.owned));
 #pragma omp parallel for schedule(static)
   for (LocalIndex p = 0; p < points.owned; ++p)
-    s[p] = alpha > 0.0 && !points.debris(p) ? stabilisationPressure(points, p, alpha) : 0.0;
+    s[p] = alpha > 0.0 && !points.debris(p) ? pressure(points, p, alpha) : 0.0;
 }
 
 }  // namespace kessler::otm

@@ -12,6 +12,8 @@
 #include "particles/store.hpp"
 
 #include <array>
+#include <limits>
+#include <utility>
 #include <vector>
 
 namespace kessler::otm {
@@ -38,12 +40,17 @@ class VolumePatch {
 
   // The stabilisation pressure of every owned point (0 for debris) in `s`, for the nodal forces: each
   // point's forces carry its own stress plus this pressure (docs/theory.md §4).
-  static void stabilisationPressures(const PointStore& points, double alpha, std::vector<double>& s);
+  void stabilisationPressures(const PointStore& points, double alpha, std::vector<double>& s) const;
+  // The largest mean tension an intact point of each body bears (Material::tensileLimit, Pa; by body
+  // index): its stabilisation pressure pulls it no harder than the rest of this (stabilisationPressure).
+  void setTensileLimits(std::vector<double> limits) { limits_ = std::move(limits); }
+  // The stabilisation pressure of point p with its body's tensile limit.
+  double pressure(const PointStore& points, LocalIndex p, double alpha) const;
 
  private:
   // Relaxes one point's defect by exp(-dt c / (k h)) (`dt_per_transits` = dt / k); returns the stored
   // energy released, J.
-  static double relax(PointStore& points, LocalIndex p, double alpha, double dt_per_transits);
+  double relax(PointStore& points, LocalIndex p, double alpha, double dt_per_transits) const;
 
   // Per point, what the gathers read: m_p, m_p ln det(dF), m_p tr(dF - I) (zero for debris); per
   // node the mass-weighted means of the last two.
@@ -53,6 +60,7 @@ class VolumePatch {
   std::vector<double> defect_step_;  // per point, the step's growth of the volume defect
   std::vector<double> signal2_;      // per point, c^2 under which apply() booked the step's stored energy
   bool rebook_ = false;              // closeStep() books the stiffness's change (with the relaxation only)
+  std::vector<double> limits_;       // per body, the tensile limit (none: no limit)
 };
 
 // Christensen's limiter for one point from the ratios r_a = ln j_a / ln j_p of the nodal means to
@@ -62,7 +70,10 @@ double christensenLimiter(double mean_ratio, double min_ratio);
 
 // The stabilisation pressure of a point, -alpha rho c^2 volume_defect (Pa): a point whose own volume
 // change has run below its patch average pushes its nodes apart, one above it pulls them together
-// (a failed point only pushes: it bears compression only).
-double stabilisationPressure(const PointStore& points, LocalIndex p, double alpha);
+// (a failed point only pushes: it bears compression only), but never so hard that the point's mean
+// stress, its own pressure (viscosity included) plus this, is a tension beyond `tensile_limit`: the
+// stabilisation holds a mode down, it does not hold together material that could not hold itself.
+double stabilisationPressure(const PointStore& points, LocalIndex p, double alpha,
+                             double tensile_limit = std::numeric_limits<double>::infinity());
 
 }  // namespace kessler::otm
