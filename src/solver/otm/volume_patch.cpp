@@ -125,7 +125,8 @@ double VolumePatch::closeStep(const PointStore& points, double alpha) {
   if (!(alpha > 0.0) || defect_step_.size() != static_cast<std::size_t>(points.owned)) return 0.0;
   return deterministicSum(points.owned, 0.0, [&](LocalIndex p) {
     if (points.debris(p)) return 0.0;
-    double second = -0.5 * pressure(points, p, alpha) * points.volume[p] * defect_step_[p];
+    const double S = pressure(points, p, alpha);
+    double second = -0.5 * S * points.volume[p] * defect_step_[p];
     // The material update changed the stiffness alpha m c^2 under the defect it stores: the stored
     // energy -S V d / 2 = alpha m c^2 d^2 / 2 changes by alpha m d^2 (c_new^2 - c_old^2) / 2, booked
     // as stored and so taken from the point's heat (the compatible energy update). Unbooked, a point
@@ -134,8 +135,7 @@ double VolumePatch::closeStep(const PointStore& points, double alpha) {
     const double d = points.volume_defect[p];
     // Not for a point its tensile limit holds: its stored energy, -S V d / 2, follows its own
     // pressure there, not c^2.
-    if (rebook_ && signal2_[p] > 0.0 && !points.eroded[p] &&
-        pressure(points, p, alpha) == stabilisationPressure(points, p, alpha)) {
+    if (rebook_ && signal2_[p] > 0.0 && !points.eroded[p] && S == stabilisationPressure(points, p, alpha)) {
       const double c = points.sound_speed[p];
       second += 0.5 * alpha * points.mass[p] * d * d * (c * c - signal2_[p]);
     }

@@ -22,14 +22,20 @@ double largestGradient(std::span<const Vec3> dN) {
   return largest * h;
 }
 
+// The point of the block nearest `target`.
+LocalIndex nearestPoint(const PointStore& points, const Vec3& target) {
+  LocalIndex p = 0;
+  for (LocalIndex q = 1; q < points.owned; ++q)
+    if ((points.x[q] - target).norm() < (points.x[p] - target).norm()) p = q;
+  return p;
+}
+
 TEST(Conditioning, AnIntactPointAtTheEdgeOfItsHullTakesItsBestConditionedSupport) {
   Model model;
   testing::addBlock(model, "block", geometry::Box{Vec3::Zero(), Vec3(6 * h, 6 * h, 4 * h)}, {6, 6, 4});
   // The point nearest the middle of the bottom face, moved to 1e-4 h above it.
   PointStore& points = model.points;
-  LocalIndex p = 0;
-  for (LocalIndex q = 1; q < points.owned; ++q)
-    if ((points.x[q] - Vec3(3 * h, 3 * h, 0)).norm() < (points.x[p] - Vec3(3 * h, 3 * h, 0)).norm()) p = q;
+  const LocalIndex p = nearestPoint(points, Vec3(3 * h, 3 * h, 0));
   points.x[p] = Vec3(points.x[p][0], points.x[p][1], 1e-4 * h);
 
   // Its first support, as the neighbourhoods build it: the nodes within the cut-off at gamma.
@@ -73,9 +79,7 @@ TEST(Conditioning, AnIntactPointOutsideTheHullOfEveryNeighbourhoodIsTornAndRelea
   Model model;
   testing::addBlock(model, "block", geometry::Box{Vec3::Zero(), Vec3(4 * h, 4 * h, 4 * h)}, {4, 4, 4});
   PointStore& points = model.points;
-  LocalIndex p = 0;
-  for (LocalIndex q = 1; q < points.owned; ++q)
-    if ((points.x[q] - Vec3(2 * h, 2 * h, 0)).norm() < (points.x[p] - Vec3(2 * h, 2 * h, 0)).norm()) p = q;
+  const LocalIndex p = nearestPoint(points, Vec3(2 * h, 2 * h, 0));
   points.x[p] = Vec3(points.x[p][0], points.x[p][1], -0.5 * h);
   points.stress[p] = -1e8 * Mat3::Identity();
 
