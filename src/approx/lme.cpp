@@ -87,6 +87,10 @@ const char* describe(Status status) {
       return "point outside the convex hull of its nodes";
     case Status::ill_conditioned:
       return "nodes nearly coplanar as seen from the point (ill-conditioned gradients)";
+    case Status::no_nodes:
+      return "no nodes within the point's support";
+    case Status::not_finite:
+      return "the point or one of its nodes has a non-finite position";
   }
   return "unknown";
 }
@@ -94,6 +98,17 @@ const char* describe(Status status) {
 Result shapeFunctions(std::span<const Vec3> d, double beta, double h, Vec3& lambda, std::span<double> N,
                       std::span<Vec3> dN, bool check_conditioning) {
   Result result;
+  // Refused before the solve, which would otherwise never end: with no offsets, or a non-finite one,
+  // the sum Z is zero or NaN and the shift that guards it against underflow finds no maximum.
+  if (d.empty()) {
+    result.status = Status::no_nodes;
+    return result;
+  }
+  for (const Vec3& da : d)
+    if (!da.allFinite()) {
+      result.status = Status::not_finite;
+      return result;
+    }
   if (!lambda.allFinite()) lambda.setZero();
   // The offsets and -beta |d_a|^2 once per call (per thread, so the time loop does not allocate
   // after the first steps).

@@ -17,7 +17,9 @@ namespace kessler::lme {
 inline double beta(double gamma, double h) { return gamma / (h * h); }
 double cutoffRadius(double gamma, double h, double tolerance);
 
-enum class Status { converged, not_converged, outside_hull, ill_conditioned };
+// `no_nodes` and `not_finite` are refused before the solve: with no offsets, or a non-finite one (a
+// point or node position that is NaN or infinite), log Z has no minimum to find.
+enum class Status { converged, not_converged, outside_hull, ill_conditioned, no_nodes, not_finite };
 
 struct Result {
   Status status = Status::converged;

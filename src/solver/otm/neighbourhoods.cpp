@@ -199,8 +199,9 @@ void Neighbourhoods::retryPoints(Model& model) {
     }
     // An intact point outside the hull of every neighbourhood tried (the nodes around it have moved
     // more than three supports away) has torn from its body: it fails and leaves with the failed.
-    const bool torn =
-        !points.failed(p) && best_attempt < 0 && r.status == lme::Status::outside_hull && points.x[p].allFinite();
+    const bool torn = !points.failed(p) && best_attempt < 0 &&
+                      (r.status == lme::Status::outside_hull || r.status == lme::Status::no_nodes) &&
+                      points.x[p].allFinite();
     if (torn) {
       points.fail(p);
       ++torn_;
@@ -225,6 +226,8 @@ void Neighbourhoods::retryPoints(Model& model) {
     } else if (r.status != lme::Status::converged && failed == np) {
       failed = p;
       failure = r;
+      // A point whose own position is not finite finds no nodes: say what is wrong with it.
+      if (!points.x[p].allFinite()) failure.status = lme::Status::not_finite;
     }
     s.rows.insert(s.rows.end(), s.node.begin(), s.node.begin() + n);
     start[k + 1] = start[k] + static_cast<std::size_t>(n);

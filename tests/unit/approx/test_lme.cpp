@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -127,6 +129,19 @@ TEST(Lme, RefusesNodesNearlyCoplanarAsSeenFromThePoint) {
     lambda.setZero();
     EXPECT_EQ(lme::shapeFunctions(d, lme::beta(4.0, 1.0), 1.0, lambda, N, dN).status, lme::Status::converged);
   }
+}
+
+// No nodes, or a non-finite offset (a NaN position), is refused at once: before the guard the
+// solve never returned (the underflow guard of log Z recursed on a NaN or empty sum).
+TEST(Lme, RefusesNoNodesAndNonFiniteOffsets) {
+  std::vector<Vec3> nodes;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) nodes.emplace_back(i, j, k);
+  EXPECT_EQ(evaluate({}, Vec3(1.0, 1.0, 1.0), 1.8, 1.0).result.status, lme::Status::no_nodes);
+  EXPECT_EQ(evaluate(nodes, Vec3(std::nan(""), 1.0, 1.0), 1.8, 1.0).result.status, lme::Status::not_finite);
+  nodes[4] = Vec3(1.0, std::numeric_limits<double>::infinity(), 1.0);
+  EXPECT_EQ(evaluate(nodes, Vec3(1.0, 1.0, 1.0), 1.8, 1.0).result.status, lme::Status::not_finite);
 }
 
 TEST(Lme, CutoffRadiusGivesTolerance) {

@@ -5,10 +5,13 @@
 // without the retry), and still a partition of unity that reproduces a linear field.
 #include "../blocks.hpp"
 #include "approx/lme.hpp"
+#include "core/error.hpp"
 #include "solver/otm/neighbourhoods.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <string>
 #include <vector>
 
 namespace kessler::otm {
@@ -95,6 +98,28 @@ TEST(Conditioning, AnIntactPointOutsideTheHullOfEveryNeighbourhoodIsTornAndRelea
     if (q != p) {
       EXPECT_FALSE(points.eroded[q]) << "point " << q;
     }
+}
+
+// A point whose position is not finite (NaN from a numerical failure upstream) finds no nodes. An
+// intact one stops the run with its name and what is wrong; a failed one is released, and the run's
+// health check names it. Before, the shape-function solve never returned.
+TEST(Conditioning, APointWithANonFinitePositionStopsTheRunInsteadOfHanging) {
+  Model model;
+  testing::addBlock(model, "block", geometry::Box{Vec3::Zero(), Vec3(4 * h, 4 * h, 4 * h)}, {4, 4, 4});
+  PointStore& points = model.points;
+  const LocalIndex p = nearestPoint(points, Vec3(2 * h, 2 * h, 2 * h));
+  points.x[p][0] = std::nan("");
+  Neighbourhoods neighbourhoods{Settings{}};
+  try {
+    neighbourhoods.update(model);
+    ADD_FAILURE() << "no error for an intact point at a NaN position";
+  } catch (const NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("non-finite position"), std::string::npos) << e.what();
+  }
+  points.fail(p);
+  ASSERT_NO_THROW(neighbourhoods.update(model));
+  EXPECT_TRUE(points.debris(p));
+  EXPECT_EQ(neighbourhoods.tornPoints(), 0);
 }
 
 }  // namespace
