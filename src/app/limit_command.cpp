@@ -18,6 +18,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -138,6 +139,8 @@ void runLimit(const LimitArguments& args) {
   fmt::print("kessler limit: {} ('{}' scaled), {} speed(s), diameters {:.2f}-{:.2f} mm in steps of {:.2f} mm\n",
              args.deck, base.bodies[static_cast<std::size_t>(projectile.body)].name, args.speeds.size(), args.min,
              args.max, args.step);
+  // Each line as it happens, also when the output goes to a file: a trial takes minutes.
+  std::fflush(stdout);
   for (const double kms : args.speeds) {
     const double speed = kms * 1e3;
     int runs = 0;
@@ -153,6 +156,7 @@ void runLimit(const LimitArguments& args) {
       trials.flush();
       fmt::print("  {:.2f} km/s, d = {:.2f} mm: rear wall {} ({}), {:.0f} s\n", kms, d / mm, t.classification,
                  t.failed ? "fails" : "holds", t.seconds);
+      std::fflush(stdout);
       return t.failed;
     };
     // The largest first: if the wall holds there, the limit lies beyond the range.
@@ -183,6 +187,7 @@ void runLimit(const LimitArguments& args) {
     else
       fmt::print("  {:.2f} km/s: {} ({:.2f} mm); Christiansen {:.2f} mm\n", kms, note,
                  (held > 0.0 ? held : failed) / mm, christiansen / mm);
+    std::fflush(stdout);
   }
   fmt::print("kessler limit: obliquity {:.1f} deg; wrote {}\n", obliquity, (out / "limit.csv").string());
   drawPlots(out, {"limit.py"});
