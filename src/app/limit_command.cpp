@@ -18,7 +18,6 @@
 
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -136,11 +135,10 @@ void runLimit(const LimitArguments& args) {
   limits << "speed_m_per_s,critical_diameter_m,held_m,failed_m,runs,christiansen_m,note\n";
   const double mm = 1e-3, step = args.step * mm;
   double obliquity = 0.0;
-  fmt::print("kessler limit: {} ('{}' scaled), {} speed(s), diameters {:.2f}-{:.2f} mm in steps of {:.2f} mm\n",
-             args.deck, base.bodies[static_cast<std::size_t>(projectile.body)].name, args.speeds.size(), args.min,
-             args.max, args.step);
-  // Each line as it happens, also when the output goes to a file: a trial takes minutes.
-  std::fflush(stdout);
+  // log::info writes each line as it happens, also when the output goes to a file: a trial takes minutes.
+  log::info("kessler limit: {} ('{}' scaled), {} speed(s), diameters {:.2f}-{:.2f} mm in steps of {:.2f} mm", args.deck,
+            base.bodies[static_cast<std::size_t>(projectile.body)].name, args.speeds.size(), args.min, args.max,
+            args.step);
   for (const double kms : args.speeds) {
     const double speed = kms * 1e3;
     int runs = 0;
@@ -154,9 +152,8 @@ void runLimit(const LimitArguments& args) {
       trials << fmt::format("{},{},{},{},{},{:.1f}\n", speed, d, t.classification, t.failed ? 1 : 0, t.christiansen,
                             t.seconds);
       trials.flush();
-      fmt::print("  {:.2f} km/s, d = {:.2f} mm: rear wall {} ({}), {:.0f} s\n", kms, d / mm, t.classification,
-                 t.failed ? "fails" : "holds", t.seconds);
-      std::fflush(stdout);
+      log::info("  {:.2f} km/s, d = {:.2f} mm: rear wall {} ({}), {:.0f} s", kms, d / mm, t.classification,
+                t.failed ? "fails" : "holds", t.seconds);
       return t.failed;
     };
     // The largest first: if the wall holds there, the limit lies beyond the range.
@@ -181,15 +178,13 @@ void runLimit(const LimitArguments& args) {
     limits << fmt::format("{},{},{},{},{},{},{}\n", speed, critical, held, failed, runs, christiansen, note);
     limits.flush();
     if (critical > 0.0)
-      fmt::print(
-          "  {:.2f} km/s: critical diameter {:.2f} mm (holds at {:.2f}, fails at {:.2f}); Christiansen {:.2f} mm\n",
-          kms, critical / mm, held / mm, failed / mm, christiansen / mm);
+      log::info("  {:.2f} km/s: critical diameter {:.2f} mm (holds at {:.2f}, fails at {:.2f}); Christiansen {:.2f} mm",
+                kms, critical / mm, held / mm, failed / mm, christiansen / mm);
     else
-      fmt::print("  {:.2f} km/s: {} ({:.2f} mm); Christiansen {:.2f} mm\n", kms, note,
-                 (held > 0.0 ? held : failed) / mm, christiansen / mm);
-    std::fflush(stdout);
+      log::info("  {:.2f} km/s: {} ({:.2f} mm); Christiansen {:.2f} mm", kms, note, (held > 0.0 ? held : failed) / mm,
+                christiansen / mm);
   }
-  fmt::print("kessler limit: obliquity {:.1f} deg; wrote {}\n", obliquity, (out / "limit.csv").string());
+  log::info("kessler limit: obliquity {:.1f} deg; wrote {}", obliquity, (out / "limit.csv").string());
   drawPlots(out, {"limit.py"});
 }
 
