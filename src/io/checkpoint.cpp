@@ -21,58 +21,8 @@ constexpr std::int64_t format_version = 5;
 // Vec3 and Mat3 are stored as runs of 3 and 9 doubles, straight from the store.
 static_assert(sizeof(Vec3) == 3 * sizeof(double));
 static_assert(sizeof(Mat3) == 9 * sizeof(double));
-// Tripwires: a field added to a store must be added to pointFields/nodeFields below (and the
-// count here), or restarts would silently lose it.
-constexpr std::size_t point_field_count = 26, node_field_count = 9;
-static_assert(sizeof(PointStore) == point_field_count * sizeof(std::vector<double>) + sizeof(std::int64_t),
-              "PointStore gained or lost a field: add it to pointFields() in io/checkpoint.cpp");
-static_assert(sizeof(NodeStore) == node_field_count * sizeof(std::vector<double>) + sizeof(std::int64_t),
-              "NodeStore gained or lost a field: add it to nodeFields() in io/checkpoint.cpp");
 static_assert(sizeof(Connectivity) == 6 * sizeof(std::vector<double>),
               "Connectivity changed: check what io/checkpoint.cpp stores and rebuilds");
-
-template <class Store, class Visit>
-void pointFields(Store& s, Visit&& visit) {
-  visit("id", s.id);
-  visit("body", s.body);
-  visit("x", s.x);
-  visit("v", s.v);
-  visit("mass", s.mass);
-  visit("volume", s.volume);
-  visit("volume0", s.volume0);
-  visit("spacing0", s.spacing0);
-  visit("F", s.F);
-  visit("dF", s.dF);
-  visit("stress", s.stress);
-  visit("energy", s.energy);
-  visit("sound_speed", s.sound_speed);
-  visit("plastic_strain", s.plastic_strain);
-  visit("temperature", s.temperature);
-  visit("damage", s.damage);
-  visit("strain_energy", s.strain_energy);
-  visit("ductile_work", s.ductile_work);
-  visit("viscous_pressure", s.viscous_pressure);
-  visit("viscosity_limiter", s.viscosity_limiter);
-  visit("volume_defect", s.volume_defect);
-  visit("be", s.be);
-  visit("eroded", s.eroded);
-  visit("passes_through", s.passes_through);
-  visit("carrier", s.carrier);
-  visit("lambda", s.lambda);
-}
-
-template <class Store, class Visit>
-void nodeFields(Store& s, Visit&& visit) {
-  visit("id", s.id);
-  visit("body", s.body);
-  visit("x", s.x);
-  visit("v", s.v);
-  visit("mass", s.mass);
-  visit("momentum", s.momentum);
-  visit("force", s.force);
-  visit("constrained", s.constrained);
-  visit("prescribed_v", s.prescribed_v);
-}
 
 // Values per entry of a stored type, and the plain number type it is made of.
 template <class T>
@@ -205,13 +155,13 @@ void writeCheckpoint(const std::filesystem::path& file, const otm::Model& model,
   h5.writeAttribute("nodes_owned", static_cast<std::int64_t>(model.nodes.owned));
 
   h5.createGroup("/points");
-  pointFields(model.points, [&](const char* name, const auto& values) {
+  PointStore::fields(model.points, [&](const char* name, const auto& values, const auto&) {
     KESSLER_VERIFY(values.size() == model.points.x.size(), "checkpoint: points.{} has {} values for {} points", name,
                    values.size(), model.points.x.size());
     writeArray(h5, fmt::format("/points/{}", name), values);
   });
   h5.createGroup("/nodes");
-  nodeFields(model.nodes, [&](const char* name, const auto& values) {
+  NodeStore::fields(model.nodes, [&](const char* name, const auto& values, const auto&) {
     KESSLER_VERIFY(values.size() == model.nodes.x.size(), "checkpoint: nodes.{} has {} values for {} nodes", name,
                    values.size(), model.nodes.x.size());
     writeArray(h5, fmt::format("/nodes/{}", name), values);
@@ -271,10 +221,12 @@ Checkpoint readCheckpoint(const std::filesystem::path& file, otm::Model& model,
   };
   model = otm::Model{};
   const std::size_t np = length("/points/x"), nn = length("/nodes/x");
-  pointFields(model.points,
-              [&](const char* name, auto& values) { readArray(h5, fmt::format("/points/{}", name), values, np); });
-  nodeFields(model.nodes,
-             [&](const char* name, auto& values) { readArray(h5, fmt::format("/nodes/{}", name), values, nn); });
+  PointStore::fields(model.points, [&](const char* name, auto& values, const auto&) {
+    readArray(h5, fmt::format("/points/{}", name), values, np);
+  });
+  NodeStore::fields(model.nodes, [&](const char* name, auto& values, const auto&) {
+    readArray(h5, fmt::format("/nodes/{}", name), values, nn);
+  });
   model.points.owned = static_cast<LocalIndex>(h5.readInt64Attribute("points_owned"));
   model.nodes.owned = static_cast<LocalIndex>(h5.readInt64Attribute("nodes_owned"));
   if (model.points.owned != model.points.size() || model.nodes.owned != model.nodes.size())

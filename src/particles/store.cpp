@@ -18,69 +18,45 @@ void permuteArray(std::vector<T>& values, const std::vector<LocalIndex>& order, 
   values.swap(scratch);
 }
 
-template <typename... Arrays>
-void permuteAll(const std::vector<LocalIndex>& order, std::size_t size, Arrays&... arrays) {
-  KESSLER_VERIFY(order.size() == size, "permutation of {} entries for {} particles", order.size(), size);
-  auto one = [&](auto& values) {
+// Tripwires: an array added to a store but not to its fields() list would be lost by a
+// permutation, a resize or a restart (the last term: `owned`, padded).
+static_assert(sizeof(PointStore) == PointStore::field_count * sizeof(std::vector<double>) + sizeof(std::int64_t),
+              "PointStore gained or lost an array: add it to PointStore::fields() and field_count");
+static_assert(sizeof(NodeStore) == NodeStore::field_count * sizeof(std::vector<double>) + sizeof(std::int64_t),
+              "NodeStore gained or lost an array: add it to NodeStore::fields() and field_count");
+
+template <class Store>
+void permuteStore(Store& store, const std::vector<LocalIndex>& order) {
+  KESSLER_VERIFY(order.size() == store.x.size(), "permutation of {} entries for {} particles", order.size(),
+                 store.x.size());
+  Store::fields(store, [&](const char*, auto& values, const auto&) {
     std::remove_reference_t<decltype(values)> scratch;
     permuteArray(values, order, scratch);
-  };
-  (one(arrays), ...);
+  });
+}
+
+template <class Store>
+void resizeStore(Store& store, std::size_t n) {
+  Store::fields(store, [&](const char*, auto& values, const auto& fresh) { values.resize(n, fresh); });
+  store.owned = static_cast<LocalIndex>(n);
 }
 
 }  // namespace
 
 void NodeStore::permute(const std::vector<LocalIndex>& order) {
-  permuteAll(order, x.size(), id, body, x, v, mass, momentum, force, constrained, prescribed_v);
+  permuteStore(*this, order);
 }
 
 void PointStore::permute(const std::vector<LocalIndex>& order) {
-  permuteAll(order, x.size(), id, body, x, v, mass, volume, volume0, spacing0, F, dF, stress, energy, sound_speed,
-             plastic_strain, temperature, damage, strain_energy, ductile_work, viscous_pressure, viscosity_limiter,
-             volume_defect, be, eroded, passes_through, carrier, lambda);
+  permuteStore(*this, order);
 }
 
 void NodeStore::resize(std::size_t n) {
-  id.resize(n);
-  body.resize(n);
-  x.resize(n, Vec3::Zero());
-  v.resize(n, Vec3::Zero());
-  mass.resize(n, 0.0);
-  momentum.resize(n, Vec3::Zero());
-  force.resize(n, Vec3::Zero());
-  constrained.resize(n, 0);
-  prescribed_v.resize(n, Vec3::Zero());
-  owned = static_cast<LocalIndex>(n);
+  resizeStore(*this, n);
 }
 
 void PointStore::resize(std::size_t n) {
-  id.resize(n);
-  body.resize(n);
-  x.resize(n, Vec3::Zero());
-  v.resize(n, Vec3::Zero());
-  mass.resize(n, 0.0);
-  volume.resize(n, 0.0);
-  volume0.resize(n, 0.0);
-  spacing0.resize(n, 0.0);
-  F.resize(n, Mat3::Identity());
-  dF.resize(n, Mat3::Identity());
-  stress.resize(n, Mat3::Zero());
-  energy.resize(n, 0.0);
-  sound_speed.resize(n, 0.0);
-  plastic_strain.resize(n, 0.0);
-  temperature.resize(n, 0.0);
-  damage.resize(n, 0.0);
-  strain_energy.resize(n, 0.0);
-  ductile_work.resize(n, 0.0);
-  viscous_pressure.resize(n, 0.0);
-  viscosity_limiter.resize(n, 0.0);
-  volume_defect.resize(n, 0.0);
-  be.resize(n, Mat3::Identity());
-  eroded.resize(n, 0);
-  passes_through.resize(n, 0);
-  carrier.resize(n, -1);
-  lambda.resize(n, Vec3::Zero());
-  owned = static_cast<LocalIndex>(n);
+  resizeStore(*this, n);
 }
 
 double PointStore::spacing(LocalIndex p) const {

@@ -3,7 +3,8 @@
 // Points are stored grouped by body so that each body is one contiguous range and a
 // material law runs over a whole range at once. Loops run over the owned ranges
 // [0, owned) so that MPI ghosts can be appended behind them later.
-// A new array must be added to resize() and permute() as well.
+// Each store declares its arrays once, in fields(): resize, permutation and the checkpoint all
+// visit that list, so a new array is added there and nowhere else.
 #include "core/types.hpp"
 
 #include <cstdint>
@@ -23,6 +24,22 @@ struct NodeStore {
   std::vector<std::uint8_t> constrained;  // bit i set: velocity component i is prescribed
   std::vector<Vec3> prescribed_v;         // prescribed velocity components
   LocalIndex owned = 0;
+
+  // Every array, once: visit(name, array, value of a new entry). Store is NodeStore, const or not.
+  template <class Store, class Visit>
+  static void fields(Store& s, Visit&& visit) {
+    const Vec3 zero = Vec3::Zero();
+    visit("id", s.id, Index{0});
+    visit("body", s.body, std::int32_t{0});
+    visit("x", s.x, zero);
+    visit("v", s.v, zero);
+    visit("mass", s.mass, 0.0);
+    visit("momentum", s.momentum, zero);
+    visit("force", s.force, zero);
+    visit("constrained", s.constrained, std::uint8_t{0});
+    visit("prescribed_v", s.prescribed_v, zero);
+  }
+  static constexpr int field_count = 9;
 
   LocalIndex size() const { return static_cast<LocalIndex>(x.size()); }
   void resize(std::size_t n);
@@ -67,6 +84,40 @@ struct PointStore {
   std::vector<std::int32_t> carrier;
   std::vector<Vec3> lambda;  // LME Lagrange multiplier, warm start for the next solve
   LocalIndex owned = 0;
+
+  // Every array, once: visit(name, array, value of a new entry). Store is PointStore, const or not.
+  template <class Store, class Visit>
+  static void fields(Store& s, Visit&& visit) {
+    const Vec3 zero = Vec3::Zero();
+    const Mat3 identity = Mat3::Identity();
+    visit("id", s.id, Index{0});
+    visit("body", s.body, std::int32_t{0});
+    visit("x", s.x, zero);
+    visit("v", s.v, zero);
+    visit("mass", s.mass, 0.0);
+    visit("volume", s.volume, 0.0);
+    visit("volume0", s.volume0, 0.0);
+    visit("spacing0", s.spacing0, 0.0);
+    visit("F", s.F, identity);
+    visit("dF", s.dF, identity);
+    visit("stress", s.stress, Mat3::Zero().eval());
+    visit("energy", s.energy, 0.0);
+    visit("sound_speed", s.sound_speed, 0.0);
+    visit("plastic_strain", s.plastic_strain, 0.0);
+    visit("temperature", s.temperature, 0.0);
+    visit("damage", s.damage, 0.0);
+    visit("strain_energy", s.strain_energy, 0.0);
+    visit("ductile_work", s.ductile_work, 0.0);
+    visit("viscous_pressure", s.viscous_pressure, 0.0);
+    visit("viscosity_limiter", s.viscosity_limiter, 0.0);
+    visit("volume_defect", s.volume_defect, 0.0);
+    visit("be", s.be, identity);
+    visit("eroded", s.eroded, std::uint8_t{0});
+    visit("passes_through", s.passes_through, std::int64_t{0});
+    visit("carrier", s.carrier, std::int32_t{-1});
+    visit("lambda", s.lambda, zero);
+  }
+  static constexpr int field_count = 26;
 
   LocalIndex size() const { return static_cast<LocalIndex>(x.size()); }
   void resize(std::size_t n);
