@@ -10,10 +10,7 @@
 #include <vector>
 
 namespace kessler::io {
-namespace {
 
-// HDF5's error stack for the last failure, outermost and innermost reason: the outer one says
-// what the library was doing, the inner one why it failed (often the operating system's errno).
 std::string hdf5Reason() {
   std::vector<std::string> descriptions;
   auto collect = [](unsigned, const H5E_error2_t* error, void* data) -> herr_t {
@@ -26,8 +23,6 @@ std::string hdf5Reason() {
   if (descriptions.size() == 1) return descriptions.front();
   return fmt::format("{} ({})", descriptions.front(), descriptions.back());
 }
-
-}  // namespace
 
 Hdf5Id& Hdf5Id::operator=(Hdf5Id&& other) noexcept {
   if (this != &other) {
@@ -93,14 +88,12 @@ void Hdf5Writer::writeRaw(const std::string& name, hid_t file_type, hid_t memory
                           std::size_t count, std::initializer_list<hsize_t> dims) {
   const std::vector<hsize_t> shape(dims);
   const hsize_t expected = std::accumulate(shape.begin(), shape.end(), hsize_t{1}, std::multiplies<>());
-  KESSLER_VERIFY(!shape.empty() && expected == count,
-                 "dataset '{}' in '{}': {} values do not fill shape [{}]", name, path_.string(), count,
-                 fmt::join(shape, ", "));
+  KESSLER_VERIFY(!shape.empty() && expected == count, "dataset '{}' in '{}': {} values do not fill shape [{}]", name,
+                 path_.string(), count, fmt::join(shape, ", "));
   Hdf5Id space(H5Screate_simple(static_cast<int>(shape.size()), shape.data(), nullptr), H5Sclose);
   if (space.get() < 0) fail(fmt::format("create the dataspace of '{}'", name));
-  Hdf5Id set(
-      H5Dcreate2(file_.get(), name.c_str(), file_type, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-      H5Dclose);
+  Hdf5Id set(H5Dcreate2(file_.get(), name.c_str(), file_type, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+             H5Dclose);
   if (set.get() < 0) fail(fmt::format("create dataset '{}'", name));
   // HDF5 refuses a null buffer even for an empty selection, and an empty vector may have one.
   if (count > 0 && H5Dwrite(set.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0)
@@ -109,12 +102,10 @@ void Hdf5Writer::writeRaw(const std::string& name, hid_t file_type, hid_t memory
   if (space.release() < 0) fail(fmt::format("close the dataspace of '{}'", name));
 }
 
-void Hdf5Writer::writeScalarAttribute(const std::string& name, hid_t file_type, hid_t memory_type,
-                                      const void* value) {
+void Hdf5Writer::writeScalarAttribute(const std::string& name, hid_t file_type, hid_t memory_type, const void* value) {
   Hdf5Id space(H5Screate(H5S_SCALAR), H5Sclose);
   if (space.get() < 0) fail(fmt::format("create the dataspace of attribute '{}'", name));
-  Hdf5Id attribute(H5Acreate2(file_.get(), name.c_str(), file_type, space.get(), H5P_DEFAULT, H5P_DEFAULT),
-                   H5Aclose);
+  Hdf5Id attribute(H5Acreate2(file_.get(), name.c_str(), file_type, space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
   if (attribute.get() < 0) fail(fmt::format("create attribute '{}'", name));
   if (H5Awrite(attribute.get(), memory_type, value) < 0) fail(fmt::format("write attribute '{}'", name));
   if (attribute.release() < 0) fail(fmt::format("close attribute '{}'", name));

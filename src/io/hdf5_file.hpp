@@ -13,6 +13,10 @@
 
 namespace kessler::io {
 
+// HDF5's error stack for the last failure, outermost and innermost reason (the outer one says what
+// the library was doing, the inner one why it failed, often the operating system's errno); clears it.
+std::string hdf5Reason();
+
 // Owns one HDF5 identifier and closes it with the matching H5?close function.
 class Hdf5Id {
  public:
@@ -42,14 +46,10 @@ class Hdf5Writer {
 
   void createGroup(const std::string& name);
   // Writes `data` as a dataset of shape `dims` (row major); the product of dims must equal data.size().
-  void writeDataset(const std::string& name, std::span<const double> data,
-                    std::initializer_list<hsize_t> dims);
-  void writeDataset(const std::string& name, std::span<const std::int64_t> data,
-                    std::initializer_list<hsize_t> dims);
-  void writeDataset(const std::string& name, std::span<const std::int32_t> data,
-                    std::initializer_list<hsize_t> dims);
-  void writeDataset(const std::string& name, std::span<const std::uint8_t> data,
-                    std::initializer_list<hsize_t> dims);
+  void writeDataset(const std::string& name, std::span<const double> data, std::initializer_list<hsize_t> dims);
+  void writeDataset(const std::string& name, std::span<const std::int64_t> data, std::initializer_list<hsize_t> dims);
+  void writeDataset(const std::string& name, std::span<const std::int32_t> data, std::initializer_list<hsize_t> dims);
+  void writeDataset(const std::string& name, std::span<const std::uint8_t> data, std::initializer_list<hsize_t> dims);
   void writeAttribute(const std::string& name, double value);
   void writeAttribute(const std::string& name, std::int64_t value);
   // Flushes and closes the file. Must be called: a failure here means the data may not be on disk.
@@ -58,8 +58,8 @@ class Hdf5Writer {
   const std::filesystem::path& path() const { return path_; }
 
  private:
-  void writeRaw(const std::string& name, hid_t file_type, hid_t memory_type, const void* data,
-                std::size_t count, std::initializer_list<hsize_t> dims);
+  void writeRaw(const std::string& name, hid_t file_type, hid_t memory_type, const void* data, std::size_t count,
+                std::initializer_list<hsize_t> dims);
   void writeScalarAttribute(const std::string& name, hid_t file_type, hid_t memory_type, const void* value);
   [[noreturn]] void fail(const std::string& what) const;
 

@@ -13,20 +13,6 @@
 namespace kessler::io {
 namespace {
 
-// HDF5's outermost and innermost reason for the last failure (as Hdf5Writer reports them).
-std::string reason() {
-  std::vector<std::string> descriptions;
-  auto collect = [](unsigned, const H5E_error2_t* error, void* data) -> herr_t {
-    static_cast<std::vector<std::string>*>(data)->emplace_back(error->desc ? error->desc : "");
-    return 0;
-  };
-  H5Ewalk2(H5E_DEFAULT, H5E_WALK_DOWNWARD, collect, &descriptions);
-  H5Eclear2(H5E_DEFAULT);
-  if (descriptions.empty()) return "no reason given by HDF5";
-  if (descriptions.size() == 1) return descriptions.front();
-  return fmt::format("{} ({})", descriptions.front(), descriptions.back());
-}
-
 template <class T>
 struct Native;
 template <>
@@ -171,7 +157,7 @@ std::vector<std::string> Hdf5Reader::datasets(const std::string& group) const {
 }
 
 void Hdf5Reader::fail(const std::string& what) const {
-  throw Error(fmt::format("HDF5 file '{}': cannot {}: {}", path_.string(), what, reason()));
+  throw Error(fmt::format("HDF5 file '{}': cannot {}: {}", path_.string(), what, hdf5Reason()));
 }
 
 }  // namespace kessler::io
