@@ -23,7 +23,7 @@ struct CloudSample {
   bool simulated;  // image 0: counts as a simulated point
 };
 
-std::vector<CloudSample> cloudSamples(const otm::Model& model, const std::vector<int>& bodies, const PlateSpec& ref,
+std::vector<CloudSample> cloudSamples(const ParticleState& model, const std::vector<int>& bodies, const PlateSpec& ref,
                                       const Mirror& mirror) {
   std::vector<CloudSample> samples;
   for (const int b : bodies) {
@@ -108,7 +108,7 @@ CloudMeasurement measureCloud(const std::vector<CloudSample>& samples, const Vec
 
 }  // namespace
 
-std::vector<CloudMeasurement> measureClouds(const otm::Model& model, const ImpactGeometry& geometry) {
+std::vector<CloudMeasurement> measureClouds(const ParticleState& model, const ImpactGeometry& geometry) {
   checkGeometry(model, geometry);
   std::vector<CloudMeasurement> clouds;
   if (geometry.plates.empty()) return clouds;
@@ -131,7 +131,7 @@ std::vector<CloudMeasurement> measureClouds(const otm::Model& model, const Impac
   return clouds;
 }
 
-EjectaMeasurement measureEjecta(const otm::Model& model, const ImpactGeometry& geometry) {
+EjectaMeasurement measureEjecta(const ParticleState& model, const ImpactGeometry& geometry) {
   checkGeometry(model, geometry);
   EjectaMeasurement ejecta;
   if (geometry.plates.empty()) return ejecta;

@@ -41,7 +41,7 @@ std::array<double, 3> extentsAlong(const std::vector<Vec3>& positions, const Mat
 }
 
 // The statistics of one fragment, from its points (grouped) and their mirror images.
-Fragment measureFragment(const otm::Model& model, const std::vector<LocalIndex>& members, const Mirror& mirror) {
+Fragment measureFragment(const ParticleState& model, const std::vector<LocalIndex>& members, const Mirror& mirror) {
   const PointStore& points = model.points;
   int touching = 0;
   for (const LocalIndex p : members) touching |= touchMask(points, p, mirror);
@@ -128,7 +128,7 @@ Shape3 characteristicLength(const std::vector<Vec3>& positions, const std::vecto
   return shape;
 }
 
-std::vector<double> referenceLinkLengths(const otm::Model& model) {
+std::vector<double> referenceLinkLengths(const ParticleState& model) {
   const auto& links = model.adjacency;
   std::vector<double> lengths(links.size());
   const auto n = static_cast<std::ptrdiff_t>(links.size());
@@ -138,7 +138,7 @@ std::vector<double> referenceLinkLengths(const otm::Model& model) {
   return lengths;
 }
 
-FragmentSet findFragments(const otm::Model& model, const std::vector<double>& reference_lengths,
+FragmentSet findFragments(const ParticleState& model, const std::vector<double>& reference_lengths,
                           const FragmentOptions& options) {
   const PointStore& points = model.points;
   const LocalIndex n = points.size();

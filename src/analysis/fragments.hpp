@@ -5,7 +5,7 @@
 // are reported per body as mass only. See docs/analysis.md for the definitions.
 #include "analysis/symmetry.hpp"
 #include "core/types.hpp"
-#include "solver/otm/model.hpp"
+#include "solver/common/particle_state.hpp"
 
 #include <array>
 #include <vector>
@@ -54,13 +54,13 @@ struct FragmentSet {
 
 // The initial length of every link of model.adjacency. Call right after the model is built
 // (before the first step) and pass the result to findFragments.
-std::vector<double> referenceLinkLengths(const otm::Model& model);
+std::vector<double> referenceLinkLengths(const ParticleState& model);
 
 // Connected components of the intact points. `reference_lengths` are the initial link lengths
 // (referenceLinkLengths); if empty they are estimated as 0.4 (h_i + h_j)/2 from the initial
 // spacings, the barycentre distance of two face-adjacent near-regular tets (0.41 h).
 // Deterministic: the union-find runs over the links in their stored order.
-FragmentSet findFragments(const otm::Model& model, const std::vector<double>& reference_lengths,
+FragmentSet findFragments(const ParticleState& model, const std::vector<double>& reference_lengths,
                           const FragmentOptions& options);
 
 // Lc of a set of positions with total volume `volume` and `count` points: the extents (max -

@@ -10,7 +10,7 @@
 namespace kessler::analysis {
 namespace {
 
-const BodyInfo& bodyOf(const otm::Model& model, const PlateSpec& plate) {
+const BodyInfo& bodyOf(const ParticleState& model, const PlateSpec& plate) {
   return model.bodies[plate.body];
 }
 
@@ -18,7 +18,7 @@ const BodyInfo& bodyOf(const otm::Model& model, const PlateSpec& plate) {
 // keeps the points inside the original thickness slab; `keep` selects the points (intact, of
 // the wall's largest fragment, ...).
 template <class Keep>
-std::vector<Vec2> projectPlate(const otm::Model& model, const PlateSpec& plate, const PlaneFrame& frame,
+std::vector<Vec2> projectPlate(const ParticleState& model, const PlateSpec& plate, const PlaneFrame& frame,
                                const Mirror& mirror, bool slab_only, const Keep& keep) {
   const BodyInfo& body = bodyOf(model, plate);
   std::vector<Vec2> projected;
@@ -56,7 +56,7 @@ Vec3 shotLineHit(const Vec3& x0, const Vec3& direction, const Vec3& normal, doub
   return x0 + direction * ((offset - normal.dot(x0)) / along);
 }
 
-void checkGeometry(const otm::Model& model, const ImpactGeometry& geometry) {
+void checkGeometry(const ParticleState& model, const ImpactGeometry& geometry) {
   const auto bodies = static_cast<int>(model.bodies.size());
   if (!(geometry.shot_direction.norm() > 0.0)) throw InputError("analysis: the shot direction is zero");
   for (const int b : geometry.projectile_bodies)
@@ -90,7 +90,7 @@ void checkGeometry(const otm::Model& model, const ImpactGeometry& geometry) {
 namespace {
 
 // The mean initial spacing of a plate's points.
-double meanSpacing(const otm::Model& model, const PlateSpec& plate) {
+double meanSpacing(const ParticleState& model, const PlateSpec& plate) {
   const BodyInfo& body = bodyOf(model, plate);
   KESSLER_VERIFY(body.point_end > body.point_begin, "plate '{}' has no points", body.name);
   double sum = 0.0;
@@ -100,11 +100,11 @@ double meanSpacing(const otm::Model& model, const PlateSpec& plate) {
 
 }  // namespace
 
-double holeCell(const otm::Model& model, const ImpactGeometry& geometry, int plate) {
+double holeCell(const ParticleState& model, const ImpactGeometry& geometry, int plate) {
   return geometry.cell_size > 0.0 ? geometry.cell_size : meanSpacing(model, geometry.plates[plate]);
 }
 
-HoleMeasurement measureHole(const otm::Model& model, const ImpactGeometry& geometry, int plate_index) {
+HoleMeasurement measureHole(const ParticleState& model, const ImpactGeometry& geometry, int plate_index) {
   checkGeometry(model, geometry);
   const PlateSpec& plate = geometry.plates[plate_index];
   const Mirror mirror(geometry.symmetry_axes);
@@ -139,7 +139,8 @@ HoleMeasurement measureHole(const otm::Model& model, const ImpactGeometry& geome
   return hole;
 }
 
-RearWallDamage measureRearWall(const otm::Model& model, const FragmentSet& fragments, const ImpactGeometry& geometry) {
+RearWallDamage measureRearWall(const ParticleState& model, const FragmentSet& fragments,
+                               const ImpactGeometry& geometry) {
   checkGeometry(model, geometry);
   KESSLER_VERIFY(!geometry.plates.empty(), "rear-wall damage needs at least one plate");
   KESSLER_VERIFY(fragments.label.size() == static_cast<std::size_t>(model.points.size()),

@@ -5,7 +5,7 @@
 #include "analysis/fragments.hpp"
 #include "analysis/plane_raster.hpp"
 #include "geometry/shape.hpp"
-#include "solver/otm/model.hpp"
+#include "solver/common/particle_state.hpp"
 
 #include <string>
 #include <vector>
@@ -42,11 +42,11 @@ struct ImpactGeometry {
 // Throws kessler::InputError when a body index is out of range, a plate is listed twice, the
 // shot direction or a normal is zero, or the shot does not travel from a plate's front face
 // to its rear face.
-void checkGeometry(const otm::Model& model, const ImpactGeometry& geometry);
+void checkGeometry(const ParticleState& model, const ImpactGeometry& geometry);
 
 // The raster cell for the holes of a plate: geometry.cell_size, or the mean initial spacing
 // of the plate's points.
-double holeCell(const otm::Model& model, const ImpactGeometry& geometry, int plate);
+double holeCell(const ParticleState& model, const ImpactGeometry& geometry, int plate);
 
 struct HoleMeasurement {
   int plate = 0;
@@ -65,7 +65,7 @@ struct HoleMeasurement {
 
 // The hole in plates[plate]: the intact points of the plate inside its original thickness slab,
 // projected on its plane and rasterised; the hole is the empty region around the shot line.
-HoleMeasurement measureHole(const otm::Model& model, const ImpactGeometry& geometry, int plate);
+HoleMeasurement measureHole(const ParticleState& model, const ImpactGeometry& geometry, int plate);
 
 struct CloudMeasurement {
   std::string name;           // body name, or "all"
@@ -94,7 +94,7 @@ struct CloudMeasurement {
 };
 
 // One cloud per projectile body and for the reference plate's body, then "all" of them.
-std::vector<CloudMeasurement> measureClouds(const otm::Model& model, const ImpactGeometry& geometry);
+std::vector<CloudMeasurement> measureClouds(const ParticleState& model, const ImpactGeometry& geometry);
 
 struct EjectaMeasurement {
   double mass = 0.0;  // kg in front of the first plate moving up-range (full model)
@@ -105,7 +105,7 @@ struct EjectaMeasurement {
   double axis_tilt = 0.0;    // rad, mean ejecta direction from the outward normal
 };
 
-EjectaMeasurement measureEjecta(const otm::Model& model, const ImpactGeometry& geometry);
+EjectaMeasurement measureEjecta(const ParticleState& model, const ImpactGeometry& geometry);
 
 struct RearWallDamage {
   int plate = 0;
@@ -133,6 +133,7 @@ struct RearWallDamage {
 // fragment whose centre lies behind the original rear face; incipient spall is failed wall
 // material still in the wall, nearer its rear face than its front face where it lies; a bulge is
 // the wall reaching more than one spacing behind its original rear face.
-RearWallDamage measureRearWall(const otm::Model& model, const FragmentSet& fragments, const ImpactGeometry& geometry);
+RearWallDamage measureRearWall(const ParticleState& model, const FragmentSet& fragments,
+                               const ImpactGeometry& geometry);
 
 }  // namespace kessler::analysis

@@ -9,7 +9,7 @@
 namespace kessler::analysis {
 namespace {
 
-double bodyMass(const otm::Model& model, int b) {
+double bodyMass(const ParticleState& model, int b) {
   const BodyInfo& body = model.bodies[b];
   double mass = 0.0;
   for (LocalIndex p = body.point_begin; p < body.point_end; ++p) mass += model.points.mass[p];
@@ -22,14 +22,14 @@ bool isProjectile(const ImpactGeometry& geometry, int b) {
   return false;
 }
 
-double density(const otm::Model& model, int b) {
+double density(const ParticleState& model, int b) {
   return model.materials[model.bodies[b].material]->referenceDensity();
 }
 
 // The projectile as the engineering models see it: a sphere of the projectile's mass and the
 // density of its (first) body, hitting at the impact speed and the obliquity of the shot to the
 // first plate's normal.
-Projectile equivalentProjectile(const otm::Model& model, const ImpactGeometry& geometry, double mass) {
+Projectile equivalentProjectile(const ParticleState& model, const ImpactGeometry& geometry, double mass) {
   Projectile projectile;
   projectile.density = density(model, geometry.projectile_bodies.front());
   projectile.diameter = std::cbrt(6.0 * mass / (std::numbers::pi * projectile.density));
@@ -39,7 +39,7 @@ Projectile equivalentProjectile(const otm::Model& model, const ImpactGeometry& g
   return projectile;
 }
 
-ShieldComparison compareShield(const otm::Model& model, const ImpactGeometry& geometry, const WallProperties& wall,
+ShieldComparison compareShield(const ParticleState& model, const ImpactGeometry& geometry, const WallProperties& wall,
                                double projectile_mass, const RearWallDamage& simulated) {
   ShieldComparison c;
   c.projectile = equivalentProjectile(model, geometry, projectile_mass);
@@ -70,7 +70,7 @@ ShieldComparison compareShield(const otm::Model& model, const ImpactGeometry& ge
 
 }  // namespace
 
-Report analyse(const otm::Model& model, const ImpactGeometry& geometry, const std::vector<double>& reference_lengths,
+Report analyse(const ParticleState& model, const ImpactGeometry& geometry, const std::vector<double>& reference_lengths,
                const WallProperties& wall) {
   checkGeometry(model, geometry);
   Report report;

@@ -54,7 +54,7 @@ struct Report {
 
 // `reference_lengths`: referenceLinkLengths(model) taken before the first step (may be empty,
 // see findFragments). Throws kessler::InputError for an inconsistent geometry.
-Report analyse(const otm::Model& model, const ImpactGeometry& geometry, const std::vector<double>& reference_lengths,
+Report analyse(const ParticleState& model, const ImpactGeometry& geometry, const std::vector<double>& reference_lengths,
                const WallProperties& wall = {});
 
 // The "analysis" object of summary.json (SI, units in the key names; see docs/analysis.md).

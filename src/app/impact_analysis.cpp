@@ -31,7 +31,7 @@ Vec3 startOf(const io::BodyConfig& body) {
   return box.empty() ? Vec3::Zero() : Vec3(0.5 * (box.min + box.max));
 }
 
-analysis::ImpactGeometry impactGeometry(const io::RunConfig& config, const otm::Model& model) {
+analysis::ImpactGeometry impactGeometry(const io::RunConfig& config, const ParticleState& model) {
   const io::AnalysisConfig& a = config.analysis;
   KESSLER_VERIFY(model.bodies.size() == config.bodies.size(), "the model has {} bodies, the deck {}",
                  model.bodies.size(), config.bodies.size());
@@ -69,7 +69,7 @@ std::string quoted(const std::string& text) {
 
 }  // namespace
 
-nlohmann::json analyseImpact(const io::RunConfig& config, const otm::Model& model, const fs::path& dir,
+nlohmann::json analyseImpact(const io::RunConfig& config, const ParticleState& model, const fs::path& dir,
                              const std::string& state) {
   if (!config.analysis.enabled) return nullptr;
   try {

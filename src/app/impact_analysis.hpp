@@ -3,7 +3,7 @@
 // model's final state, printed, returned for summary.json and written as fragments.csv, then the
 // pictures of tools/plots. Neither step can fail the run: a problem is logged and recorded.
 #include "io/config.hpp"
-#include "solver/otm/model.hpp"
+#include "solver/common/particle_state.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -16,7 +16,7 @@ namespace kessler::app {
 // and the fragment files written in `dir`. Returns the "analysis" object of summary.json: null when
 // the deck's analysis is off, {"error": why} when it could not be done. `state` says which state was
 // measured ("final", or "at the failure").
-nlohmann::json analyseImpact(const io::RunConfig& config, const otm::Model& model, const std::filesystem::path& dir,
+nlohmann::json analyseImpact(const io::RunConfig& config, const ParticleState& model, const std::filesystem::path& dir,
                              const std::string& state);
 
 // Runs tools/plots scripts (by default debris_cloud.py and fragments.py) on `dir` with

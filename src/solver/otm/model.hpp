@@ -1,24 +1,15 @@
 #pragma once
-// Everything the OTM integrator advances: nodes, material points, bodies and their materials.
-#include "material/material.hpp"
+// Everything the OTM integrator advances: the shared particle state (material points, bodies,
+// materials, links) and OTM's own discretisation, the nodes and the point-node neighbourhoods.
 #include "particles/connectivity.hpp"
 #include "particles/store.hpp"
-
-#include <array>
-#include <vector>
+#include "solver/common/particle_state.hpp"
 
 namespace kessler::otm {
 
-struct Model {
+struct Model : ParticleState {
   NodeStore nodes;
-  PointStore points;
-  std::vector<BodyInfo> bodies;
-  std::vector<MaterialPtr> materials;  // indexed by BodyInfo::material
-  Connectivity connectivity;            // point-node neighbourhoods and shape functions
-  // Pairs of points (global indices, i < j) whose initial tets share a face; fragments are the
-  // connected components of intact material over these links (analysis/fragments.hpp).
-  std::vector<std::array<LocalIndex, 2>> adjacency;
-  std::vector<double> adjacency_length0;  // initial distance of each pair, same order
+  Connectivity connectivity;  // point-node neighbourhoods and shape functions
 };
 
 }  // namespace kessler::otm
