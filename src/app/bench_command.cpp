@@ -5,14 +5,13 @@
 // resident memory (getrusage ru_maxrss) is that problem's own, meshing included.
 #include "app/bench_problems.hpp"
 #include "app/commands.hpp"
-#include "app/run_folder.hpp"
+#include "app/methods.hpp"
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "core/timer.hpp"
 #include "io/deck.hpp"
 #include "io/fields_writer.hpp"
-#include "solver/otm/integrator.hpp"
-#include "solver/otm/setup.hpp"
+#include "solver/common/method.hpp"
 
 #include <fmt/format.h>
 #include <omp.h>
@@ -96,12 +95,16 @@ nlohmann::json runOne(const BenchProblem& problem, BenchSize size, int steps_wan
 
   const double resident_start = residentBytes();  // the program itself, before any model exists
   Stopwatch setup_watch;
-  otm::Model model = otm::buildModel(bodySetups(config), config.symmetry_axes);
+  const std::unique_ptr<Method> method = buildMethod(config);
   const double meshing = setup_watch.seconds();
-  otm::Integrator integrator(model, config.solver);
-  integrator.initialise();
+  method->initialise();
   const double setup = setup_watch.seconds();
-  const std::map<std::string, double> before = integrator.timers().totals();
+  const std::map<std::string, double> before = method->timers().totals();
+  const PointStore& points_store = method->state().points;
+  auto write = [&](io::FieldWriter& writer) {
+    const Clock clock = method->clock();
+    writer.write(clock.steps, clock.time, method->nodes(), points_store);
+  };
 
   // Fields are written at the first and the last step, as a run stopped by max_steps does.
   io::FieldWriter writer(dir);
@@ -111,12 +114,12 @@ nlohmann::json runOne(const BenchProblem& problem, BenchSize size, int steps_wan
   try {
     {
       Stopwatch w;
-      writer.write(integrator.steps(), integrator.time(), model.nodes, model.points);
+      write(writer);
       output += w.seconds();
     }
-    for (int s = 0; s < steps && !integrator.finished(); ++s) integrator.step();
+    for (int s = 0; s < steps && !method->finished(); ++s) method->step();
     Stopwatch w;
-    writer.write(integrator.steps(), integrator.time(), model.nodes, model.points);
+    write(writer);
     output += w.seconds();
   } catch (const NumericalError& e) {
     status = "failed";
@@ -126,10 +129,11 @@ nlohmann::json runOne(const BenchProblem& problem, BenchSize size, int steps_wan
   std::filesystem::remove_all(dir);
 
   const int threads = omp_get_max_threads();
-  const double points = model.points.owned;
-  const double point_steps = points * static_cast<double>(integrator.steps());
+  const double points = points_store.owned;
+  const long steps_taken = method->clock().steps;
+  const double point_steps = points * static_cast<double>(steps_taken);
   std::map<std::string, double> phases;
-  for (const auto& [name, seconds] : integrator.timers().totals()) {
+  for (const auto& [name, seconds] : method->timers().totals()) {
     const auto it = before.find(name);
     phases[name] = seconds - (it == before.end() ? 0.0 : it->second);
   }
@@ -149,10 +153,9 @@ nlohmann::json runOne(const BenchProblem& problem, BenchSize size, int steps_wan
       {"size", sizeName(size)},
       {"status", status},
       {"mesh_size_m", h},
-      {"points", model.points.owned},
-      {"nodes", model.nodes.owned},
-      {"mean_neighbours", points > 0 ? static_cast<double>(model.connectivity.node.size()) / points : 0.0},
-      {"steps", integrator.steps()},
+      {"points", points_store.owned},
+      {"nodes", method->nodes().owned},
+      {"steps", steps_taken},
       {"threads", threads},
       {"setup_s", setup},
       {"meshing_s", meshing},
@@ -170,6 +173,7 @@ nlohmann::json runOne(const BenchProblem& problem, BenchSize size, int steps_wan
       {"omp_wait_policy", waitPolicy()},
       {"overrides", overrides},
   };
+  for (const auto& [name, value] : method->sizes()) j[name] = value;
   if (!message.empty()) j["message"] = message;
   return j;
 }

@@ -22,14 +22,6 @@ std::vector<MaterialPtr> deckMaterials(const io::RunConfig& config) {
   return materials;
 }
 
-std::vector<otm::BodySetup> bodySetups(const io::RunConfig& config) {
-  const std::vector<MaterialPtr> materials = deckMaterials(config);
-  std::vector<otm::BodySetup> bodies;
-  for (const io::BodyConfig& b : config.bodies)
-    bodies.push_back({b.name, materials.at(static_cast<std::size_t>(b.material)), b.mesh, b.velocity, b.fixed});
-  return bodies;
-}
-
 void removeOutputsOutside(const std::filesystem::path& dir, const std::vector<io::XdmfGrid>& point_grids) {
   std::set<std::string> listed;
   for (const io::XdmfGrid& grid : point_grids) {

@@ -2,7 +2,7 @@
 // What a run builds from its deck and keeps in its folder, shared by a new run and a restart.
 #include "io/config.hpp"
 #include "io/xdmf.hpp"
-#include "solver/otm/setup.hpp"
+#include "material/material.hpp"
 
 #include <filesystem>
 #include <vector>
@@ -11,9 +11,6 @@ namespace kessler::app {
 
 // One material per entry of config.materials, in that order.
 std::vector<MaterialPtr> deckMaterials(const io::RunConfig& config);
-
-// The bodies to mesh, each with its material from deckMaterials().
-std::vector<otm::BodySetup> bodySetups(const io::RunConfig& config);
 
 // Removes the field files in dir/fields/ that `point_grids` does not name (outputs written after
 // a checkpoint, or the extra output of a failed or stopped run) and stray temporaries, so that a

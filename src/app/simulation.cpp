@@ -1,6 +1,7 @@
 #include "app/simulation.hpp"
 
 #include "app/impact_analysis.hpp"
+#include "app/methods.hpp"
 #include "app/progress.hpp"
 #include "app/run_folder.hpp"
 #include "app/signals.hpp"
@@ -11,9 +12,7 @@
 #include "io/deck.hpp"
 #include "io/fields_writer.hpp"
 #include "io/summary.hpp"
-#include "solver/otm/diagnostics.hpp"
-#include "solver/otm/integrator.hpp"
-#include "solver/otm/setup.hpp"
+#include "solver/common/method.hpp"
 
 #include <omp.h>
 
@@ -29,40 +28,35 @@ enum class Stop { none, max_steps, signal };
 class Run {
  public:
   Run(const io::RunConfig& config, const RunOptions& options)
-      : config_(config),
-        options_(options),
-        dir_(config.output.dir),
-        checkpoint_file_(io::checkpointPath(dir_)),
-        diagnostics_(config.solver) {}
+      : config_(config), options_(options), dir_(config.output.dir), checkpoint_file_(io::checkpointPath(dir_)) {}
 
   RunOutcome execute();
 
  private:
   void start();
   void resume();
-  void loop();
+  void advance();
   void fail(const NumericalError& e);
-  void remember() {
-    record_.history.push_back(
-        {integrator_->steps(), integrator_->time(), integrator_->lastStep(), integrator_->energies()});
+  void appendHistory() {
+    const Clock clock = method_->clock();
+    record_.history.push_back({clock.steps, clock.time, clock.dt_last, method_->energies()});
   }
   void output();
   bool checkpointDue() const;
   void checkpoint();
-  void check() {
-    const otm::StepInfo at{integrator_->steps(), integrator_->time(), integrator_->nextStep(),
-                           integrator_->initialStep()};
-    diagnostics_.check(model_, at, record_.history.front().energies.total());
-  }
+  void check() { method_->check(record_.history.front().energies.total()); }
+  long steps() const { return method_->clock().steps; }
+  double time() const { return method_->clock().time; }
+  double lastStep() const { return method_->clock().dt_last; }
   void finish() {
     record_.extra_timings["output"] = output_seconds_;
     record_.extra_timings["checkpoint"] = checkpoint_seconds_;
     record_.wall_seconds = previous_wall_seconds_ + wall_.seconds();
-    io::writeSummary(dir_ / "summary.json", record_, *integrator_);
+    io::writeSummary(dir_ / "summary.json", record_, *method_);
   }
   void printSummary() const;
   // The impact measurements into the summary (before finish() writes it) and the pictures after.
-  void analyse(const std::string& state) { record_.analysis = analyseImpact(config_, model_, dir_, state); }
+  void analyse(const std::string& state) { record_.analysis = analyseImpact(config_, method_->state(), dir_, state); }
   void plots() const {
     if (config_.analysis.enabled && config_.analysis.plots) drawPlots(dir_);
   }
@@ -71,10 +65,8 @@ class Run {
   RunOptions options_;
   std::filesystem::path dir_, checkpoint_file_;
   Stopwatch wall_, since_checkpoint_;
-  otm::Model model_;
-  std::unique_ptr<otm::Integrator> integrator_;
+  std::unique_ptr<Method> method_;
   std::unique_ptr<io::FieldWriter> writer_;
-  otm::Diagnostics diagnostics_;
   io::RunRecord record_;
   double next_output_ = 0.0, next_checkpoint_ = 0.0;
   double previous_wall_seconds_ = 0.0, output_seconds_ = 0.0, checkpoint_seconds_ = 0.0;
@@ -100,9 +92,9 @@ RunOutcome Run::execute() {
   std::optional<Progress> progress;
   try {
     if (!options_.restart) start();
-    progress.emplace(config_.solver.end_time, model_.points.owned, options_.progress);
-    while (!integrator_->finished()) {
-      if (config_.solver.max_steps > 0 && integrator_->steps() >= config_.solver.max_steps) {
+    progress.emplace(config_.solver.end_time, method_->state().points.owned, options_.progress);
+    while (!method_->finished()) {
+      if (config_.solver.max_steps > 0 && steps() >= config_.solver.max_steps) {
         stop_ = Stop::max_steps;
         break;
       }
@@ -110,36 +102,35 @@ RunOutcome Run::execute() {
         stop_ = Stop::signal;
         break;
       }
-      loop();
-      progress->update(integrator_->steps(), integrator_->time(), integrator_->lastStep());
+      advance();
+      progress->update(steps(), time(), lastStep());
     }
   } catch (const NumericalError& e) {
-    if (progress) progress->finish(integrator_->steps(), integrator_->time(), integrator_->lastStep());
+    if (progress) progress->finish(steps(), time(), lastStep());
     fail(e);
   }
-  progress->finish(integrator_->steps(), integrator_->time(), integrator_->lastStep());
+  progress->finish(steps(), time(), lastStep());
 
   // The checkpoint comes before any extra output, so that a restart continues exactly as the run
   // would have gone on (with the history and output series it would have had).
-  if (checkpoint_step_ != integrator_->steps()) checkpoint();
+  if (checkpoint_step_ != steps()) checkpoint();
   const std::string restart_hint = fmt::format("kessler run --restart {}", dir_.string());
   if (stop_ == Stop::signal) {
     const int signal = StopSignals::received();
     record_.status = "interrupted";
     record_.message = fmt::format("stopped by {} at step {}, t = {:.6g} s; a checkpoint is in {}", signalName(signal),
-                                  integrator_->steps(), integrator_->time(), checkpoint_file_.string());
+                                  steps(), time(), checkpoint_file_.string());
     finish();
     log::info("kessler: {}; continue with: {}", record_.message, restart_hint);
     return {dir_, 128 + signal};
   }
-  if (record_.history.back().step != integrator_->steps()) {
-    remember();
+  if (record_.history.back().step != steps()) {
+    appendHistory();
     output();
   }
   if (stop_ == Stop::max_steps) {
     record_.status = "stopped";
-    record_.message =
-        fmt::format("stopped at solver.max_steps = {} (t = {:.6g} s)", config_.solver.max_steps, integrator_->time());
+    record_.message = fmt::format("stopped at solver.max_steps = {} (t = {:.6g} s)", config_.solver.max_steps, time());
     log::info("kessler: {}; continue with: {} --set solver.max_steps=0", record_.message, restart_hint);
   }
   // A run stopped at max_steps is unfinished, like one stopped by a signal: no analysis.
@@ -154,13 +145,12 @@ RunOutcome Run::execute() {
 void Run::start() {
   Stopwatch meshing;
   log::info("meshing {} bodies", config_.bodies.size());
-  model_ = otm::buildModel(bodySetups(config_), config_.symmetry_axes);
+  method_ = buildMethod(config_);
   record_.extra_timings["meshing"] = meshing.seconds();
-  log::info("model: {} material points, {} nodes; {} threads", model_.points.owned, model_.nodes.owned,
+  log::info("model: {} material points, {} nodes; {} threads", method_->state().points.owned, method_->nodes().owned,
             record_.threads);
-  integrator_ = std::make_unique<otm::Integrator>(model_, config_.solver);
-  integrator_->initialise();
-  remember();
+  method_->initialise();
+  appendHistory();
   check();
   output();
   next_output_ = config_.output.every > 0.0 ? config_.output.every : config_.solver.end_time;
@@ -170,41 +160,41 @@ void Run::start() {
 // A restart: the model, the integrator and the run's bookkeeping from the checkpoint.
 void Run::resume() {
   Stopwatch restoring;
-  const io::Checkpoint c = io::readCheckpoint(checkpoint_file_, model_, deckMaterials(config_));
-  integrator_ = std::make_unique<otm::Integrator>(model_, config_.solver);
-  integrator_->restore(c.integrator);
-  record_.history = c.loop.history;
-  record_.outputs = c.loop.outputs;
+  io::RunLoopState loop;
+  method_ = restoreMethod(config_, checkpoint_file_, loop);
+  record_.history = loop.history;
+  record_.outputs = loop.outputs;
   KESSLER_VERIFY(!record_.history.empty(), "checkpoint '{}' holds no history", checkpoint_file_.string());
-  next_output_ = c.loop.next_output;
-  next_checkpoint_ = c.loop.next_checkpoint;
-  previous_wall_seconds_ = c.loop.wall_seconds;
-  checkpoint_step_ = integrator_->steps();
+  next_output_ = loop.next_output;
+  next_checkpoint_ = loop.next_checkpoint;
+  previous_wall_seconds_ = loop.wall_seconds;
+  checkpoint_step_ = steps();
   // Outputs written after the checkpoint belong to a future this run recomputes.
-  removeOutputsOutside(dir_, c.loop.point_grids);
-  writer_->restoreSeries(c.loop.point_grids, c.loop.node_grids);
+  removeOutputsOutside(dir_, loop.point_grids);
+  writer_->restoreSeries(loop.point_grids, loop.node_grids);
   io::writeHistory(dir_ / "history.csv", record_.history);
   record_.extra_timings["restore"] = restoring.seconds();
   log::info("restarting from {}: step {}, t = {:.6g} s; {} material points, {} nodes; {} threads",
-            checkpoint_file_.string(), integrator_->steps(), integrator_->time(), model_.points.owned,
-            model_.nodes.owned, record_.threads);
+            checkpoint_file_.string(), steps(), time(), method_->state().points.owned, method_->nodes().owned,
+            record_.threads);
 }
 
-void Run::loop() {
-  integrator_->step();  // a numerical failure names its step and time (Integrator::step)
+// One step, with its checks, and the output and checkpoint that fall due after it.
+void Run::advance() {
+  method_->step();  // a numerical failure names its step and time
   check();
-  if (integrator_->time() >= next_output_ * (1.0 - 1e-9) || integrator_->finished()) {
-    remember();
+  if (time() >= next_output_ * (1.0 - 1e-9) || method_->finished()) {
+    appendHistory();
     output();
     const double every = config_.output.every > 0.0 ? config_.output.every : config_.solver.end_time;
-    while (next_output_ <= integrator_->time() * (1.0 + 1e-9)) next_output_ += every;
+    while (next_output_ <= time() * (1.0 + 1e-9)) next_output_ += every;
   }
-  if (!integrator_->finished() && checkpointDue()) checkpoint();
+  if (!method_->finished() && checkpointDue()) checkpoint();
 }
 
 void Run::output() {
   Stopwatch watch;
-  writer_->write(integrator_->steps(), integrator_->time(), model_.nodes, model_.points);
+  writer_->write(steps(), time(), method_->nodes(), method_->state().points);
   io::writeHistory(dir_ / "history.csv", record_.history);
   ++record_.outputs;
   output_seconds_ += watch.seconds();
@@ -212,7 +202,7 @@ void Run::output() {
 
 bool Run::checkpointDue() const {
   const io::CheckpointConfig& c = config_.checkpoint;
-  return (c.every > 0.0 && integrator_->time() >= next_checkpoint_ * (1.0 - 1e-9)) ||
+  return (c.every > 0.0 && time() >= next_checkpoint_ * (1.0 - 1e-9)) ||
          (c.wall_interval > 0.0 && since_checkpoint_.seconds() >= c.wall_interval);
 }
 
@@ -220,14 +210,12 @@ void Run::checkpoint() {
   Stopwatch watch;
   const double every = config_.checkpoint.every;
   if (every > 0.0)
-    while (next_checkpoint_ <= integrator_->time() * (1.0 + 1e-9)) next_checkpoint_ += every;
-  io::Checkpoint c;
-  c.integrator = integrator_->state();
-  c.loop = {next_output_,        next_checkpoint_, previous_wall_seconds_ + wall_.seconds(),
-            record_.outputs,     record_.history,  writer_->pointGrids(),
-            writer_->nodeGrids()};
-  io::writeCheckpoint(checkpoint_file_, model_, c);
-  checkpoint_step_ = integrator_->steps();
+    while (next_checkpoint_ <= time() * (1.0 + 1e-9)) next_checkpoint_ += every;
+  const io::RunLoopState loop{next_output_,        next_checkpoint_, previous_wall_seconds_ + wall_.seconds(),
+                              record_.outputs,     record_.history,  writer_->pointGrids(),
+                              writer_->nodeGrids()};
+  saveMethod(*method_, checkpoint_file_, loop);
+  checkpoint_step_ = steps();
   since_checkpoint_.restart();
   checkpoint_seconds_ += watch.seconds();
 }
@@ -238,8 +226,8 @@ void Run::fail(const NumericalError& e) {
   record_.status = "failed";
   record_.message = e.what();
   std::string where = fmt::format("the state at the failure is the last output in {}", dir_.string());
-  if (integrator_) {
-    remember();
+  if (method_) {
+    appendHistory();
     output();
     analyse("at the failure");
     finish();
@@ -254,21 +242,17 @@ void Run::fail(const NumericalError& e) {
 }
 
 void Run::printSummary() const {
-  const otm::Energies& e0 = record_.history.front().energies;
-  const otm::Energies& e1 = record_.history.back().energies;
-  const double point_steps = static_cast<double>(integrator_->steps()) * model_.points.owned;
-  log::info("{} steps to t = {:.4g} s in {:.1f} s wall ({:.3g} us per material-point step, {} threads)",
-            integrator_->steps(), integrator_->time(), record_.wall_seconds,
-            point_steps > 0 ? 1e6 * record_.wall_seconds / point_steps : 0.0, record_.threads);
+  const Energies& e0 = record_.history.front().energies;
+  const Energies& e1 = record_.history.back().energies;
+  const double point_steps = static_cast<double>(steps()) * method_->state().points.owned;
+  log::info("{} steps to t = {:.4g} s in {:.1f} s wall ({:.3g} us per material-point step, {} threads)", steps(),
+            time(), record_.wall_seconds, point_steps > 0 ? 1e6 * record_.wall_seconds / point_steps : 0.0,
+            record_.threads);
   log::info("energy: kinetic {:.6g} -> {:.6g} J, internal {:.6g} -> {:.6g} J, total {:.6g} -> {:.6g} J", e0.kinetic,
             e1.kinetic, e0.internal, e1.internal, e0.total(), e1.total());
   log::info("momentum: ({:.6g}, {:.6g}, {:.6g}) -> ({:.6g}, {:.6g}, {:.6g}) kg m/s", e0.momentum[0], e0.momentum[1],
             e0.momentum[2], e1.momentum[0], e1.momentum[1], e1.momentum[2]);
-  if (integrator_->tornPoints() > 0)
-    log::info(
-        "torn from their bodies: {} intact point(s), {:.3g} g, outside the hull of every neighbourhood of "
-        "their nodes, released as debris (docs/theory.md §8)",
-        integrator_->tornPoints(), 1e3 * integrator_->tornMass());
+  for (const std::string& note : method_->notes()) log::info("{}", note);
   log::info("results in {}/ (points.xdmf and nodes.xdmf open in ParaView; summary.json, history.csv)", dir_.string());
 }
 

@@ -55,7 +55,7 @@ std::vector<XdmfGrid> gridsFrom(const json& all) {
 
 }  // namespace
 
-std::string checkpointMetaText(const otm::Model& model, const RunLoopState& loop) {
+std::string checkpointMetaText(const ParticleState& model, const RunLoopState& loop) {
   json bodies = json::array();
   for (const BodyInfo& b : model.bodies)
     bodies.push_back({{"name", b.name},
@@ -75,7 +75,7 @@ std::string checkpointMetaText(const otm::Model& model, const RunLoopState& loop
 }
 
 void readCheckpointMeta(const std::string& text, const std::filesystem::path& file,
-                        const std::vector<MaterialPtr>& materials, otm::Model& model, RunLoopState& loop) {
+                        const std::vector<MaterialPtr>& materials, ParticleState& model, RunLoopState& loop) {
   json meta;
   try {
     meta = json::parse(text);

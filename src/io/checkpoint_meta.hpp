@@ -10,11 +10,11 @@
 
 namespace kessler::io {
 
-std::string checkpointMetaText(const otm::Model& model, const RunLoopState& loop);
+std::string checkpointMetaText(const ParticleState& model, const RunLoopState& loop);
 
 // Fills model.bodies and model.materials (each checkpoint material found by name among
 // `materials`) and loop.point_grids / loop.node_grids. Throws kessler::Error naming `file`.
 void readCheckpointMeta(const std::string& text, const std::filesystem::path& file,
-                        const std::vector<MaterialPtr>& materials, otm::Model& model, RunLoopState& loop);
+                        const std::vector<MaterialPtr>& materials, ParticleState& model, RunLoopState& loop);
 
 }  // namespace kessler::io

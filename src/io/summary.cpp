@@ -9,9 +9,11 @@ namespace kessler::io {
 
 namespace {
 
-nlohmann::json vec(const Vec3& v) { return nlohmann::json::array({v[0], v[1], v[2]}); }
+nlohmann::json vec(const Vec3& v) {
+  return nlohmann::json::array({v[0], v[1], v[2]});
+}
 
-nlohmann::json energiesJson(const otm::Energies& e) {
+nlohmann::json energiesJson(const Energies& e) {
   return {{"kinetic_J", e.kinetic},
           {"internal_J", e.internal},
           {"stabilisation_J", e.stabilisation},
@@ -21,8 +23,9 @@ nlohmann::json energiesJson(const otm::Energies& e) {
 
 }  // namespace
 
-void writeSummary(const std::filesystem::path& file, const RunRecord& record, const otm::Integrator& integrator) {
-  const otm::Model& model = integrator.model();
+void writeSummary(const std::filesystem::path& file, const RunRecord& record, const Method& method) {
+  const ParticleState& model = method.state();
+  const Clock clock = method.clock();
   nlohmann::json bodies = nlohmann::json::array();
   for (const BodyInfo& body : model.bodies) {
     double mass = 0.0, volume = 0.0;
@@ -37,27 +40,23 @@ void writeSummary(const std::filesystem::path& file, const RunRecord& record, co
                       {"mass_kg", mass},
                       {"volume_m3", volume}});
   }
-  const double point_steps = static_cast<double>(integrator.steps()) * model.points.owned;
+  const double point_steps = static_cast<double>(clock.steps) * model.points.owned;
   nlohmann::json timings = nlohmann::json::object();
-  for (const auto& [phase, seconds] : integrator.timers().totals()) timings[phase] = seconds;
+  for (const auto& [phase, seconds] : method.timers().totals()) timings[phase] = seconds;
+  nlohmann::json problem = {{"points", model.points.owned}, {"nodes", method.nodes().owned}, {"bodies", bodies}};
+  for (const auto& [name, value] : method.sizes()) problem[name] = value;
   for (const auto& [phase, seconds] : record.extra_timings) timings[phase] = seconds;
 
   nlohmann::json j = {
       {"title", record.title},
       {"deck", record.deck},
       {"status", record.status},
-      {"problem",
-       {{"points", model.points.owned},
-        {"nodes", model.nodes.owned},
-        {"mean_neighbours", model.points.owned > 0 ? static_cast<double>(model.connectivity.node.size()) /
-                                                         static_cast<double>(model.points.owned)
-                                                   : 0.0},
-        {"bodies", bodies}}},
+      {"problem", problem},
       {"threads", record.threads},
-      {"steps", integrator.steps()},
-      {"simulated_time_s", integrator.time()},
-      {"end_time_s", integrator.settings().end_time},
-      {"time_step_s", {{"initial", integrator.initialStep()}, {"last", integrator.lastStep()}}},
+      {"steps", clock.steps},
+      {"simulated_time_s", clock.time},
+      {"end_time_s", method.endTime()},
+      {"time_step_s", {{"initial", clock.dt_initial}, {"last", clock.dt_last}}},
       {"wall_time_s", record.wall_seconds},
       {"us_per_point_step", point_steps > 0 ? 1e6 * record.wall_seconds / point_steps : 0.0},
       {"outputs", record.outputs},

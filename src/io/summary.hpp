@@ -2,7 +2,8 @@
 // The end-of-run record: DIR/summary.json (problem size, steps, wall time, energies, momentum,
 // per-phase timings, status) and DIR/history.csv (energies and momentum over time).
 #include "core/types.hpp"
-#include "solver/otm/integrator.hpp"
+#include "solver/common/energies.hpp"
+#include "solver/common/method.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -17,7 +18,7 @@ struct HistoryRow {
   long step = 0;
   double time = 0.0;
   double dt = 0.0;
-  otm::Energies energies;
+  Energies energies;
 };
 
 struct RunRecord {
@@ -33,8 +34,8 @@ struct RunRecord {
   nlohmann::json analysis;  // the impact measurements (docs/analysis.md); null: none
 };
 
-// Writes summary.json for the run of `integrator` (atomically).
-void writeSummary(const std::filesystem::path& file, const RunRecord& record, const otm::Integrator& integrator);
+// Writes summary.json for the run of `method` (atomically).
+void writeSummary(const std::filesystem::path& file, const RunRecord& record, const Method& method);
 
 // Writes the history as CSV (atomically).
 void writeHistory(const std::filesystem::path& file, const std::vector<HistoryRow>& history);

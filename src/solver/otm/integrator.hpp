@@ -4,6 +4,7 @@
 // Euler-Lagrange update of node positions, material points carried by the nodes' motion,
 // constitutive update, new neighbourhoods and shape functions, CFL time step.
 #include "core/timer.hpp"
+#include "solver/common/energies.hpp"
 #include "solver/otm/debris.hpp"
 #include "solver/otm/eigenerosion.hpp"
 #include "solver/otm/integrator_assembly.hpp"
@@ -27,16 +28,6 @@ double smallestStretch(const Mat3& F);
 inline constexpr double flattened = 0.5;
 inline constexpr double support_lengths = 4.0;
 double stepLength(const Model& model, LocalIndex p);
-
-struct Energies {
-  double kinetic = 0.0;   // 1/2 sum m_p |v_p|^2
-  double internal = 0.0;  // sum m_p e_p
-  // Stored by the volume stabilisation (the work its pressure has done; Settings::volume_stabilisation):
-  // kept apart from the material's internal energy, which it must not heat.
-  double stabilisation = 0.0;
-  Vec3 momentum = Vec3::Zero();
-  double total() const { return kinetic + internal + stabilisation; }
-};
 
 // The integrator's own scalar state; with the Model (connectivity included) it is the complete
 // state of a run, which is what a checkpoint holds.
@@ -103,11 +94,11 @@ class Integrator {
     Vec3 du, dv;
   };
   std::vector<NodeIncrement> increment_;
-  std::vector<double> j_point_;        // det(dF) per point (after averaging)
+  std::vector<double> j_point_;  // det(dF) per point (after averaging)
   // J per point, heat to add: before the material update the kinetic energy the step's transfer took,
   // after it the compatible energy update's balance (balanceEnergy).
   std::vector<double> transfer_heat_;
-  std::vector<double> volume_rate_;    // ln det(dF) / dt of each point's last step, 1/s (time step)
+  std::vector<double> volume_rate_;  // ln det(dF) / dt of each point's last step, 1/s (time step)
   VolumePatch patch_;
   std::vector<double> stabilisation_pressure_;  // per point, VolumePatch::stabilisationPressures
   // Per point, the work its forces did over the step (updatePoints), then plus its energy before the

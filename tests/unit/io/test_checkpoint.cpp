@@ -135,7 +135,7 @@ TEST_F(CheckpointTest, RestoresTheModelAndTheRunStateBitwise) {
   EXPECT_EQ(read.loop.outputs, 2);
   ASSERT_EQ(read.loop.history.size(), 2u);
   EXPECT_EQ(read.loop.history[1].step, 5);
-  EXPECT_EQ(std::memcmp(&read.loop.history[1].energies, &written.loop.history[1].energies, sizeof(otm::Energies)), 0);
+  EXPECT_EQ(std::memcmp(&read.loop.history[1].energies, &written.loop.history[1].energies, sizeof(Energies)), 0);
   EXPECT_EQ(temporalPolyvertexXdmf("p", read.loop.point_grids), temporalPolyvertexXdmf("p", written.loop.point_grids));
   EXPECT_EQ(read.loop.node_grids.size(), 2u);
 }

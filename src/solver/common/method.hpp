@@ -1,0 +1,59 @@
+#pragma once
+// A particle method as the run loop, the benchmark and the analysis see it (docs/architecture.md).
+// The run loop (app/simulation.cpp) owns output, checkpoints, restart, signals, progress, history
+// and the summary; a method owns its discretisation and advances the shared particle state.
+// A new method implements this interface in its own folder beside solver/otm/ and is added to
+// the factory (app/methods.cpp).
+#include "core/timer.hpp"
+#include "particles/store.hpp"
+#include "solver/common/energies.hpp"
+#include "solver/common/particle_state.hpp"
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace kessler {
+
+// Where a method stands in time.
+struct Clock {
+  double time = 0.0;        // s
+  long steps = 0;           // steps taken
+  double dt_last = 0.0;     // the step just taken (0 before the first)
+  double dt_next = 0.0;     // the step about to be taken
+  double dt_initial = 0.0;  // the run's first step
+};
+
+class Method {
+ public:
+  virtual ~Method() = default;
+
+  // The deck's solver.method.
+  virtual const char* name() const = 0;
+  // A new run's first state: the first time step and whatever a step starts from. A restored
+  // method is not initialised again.
+  virtual void initialise() = 0;
+  // One step. A numerical failure throws NumericalError naming the step, time, point and value.
+  virtual void step() = 0;
+  // The health checks after a step (non-finite or collapsing states, a time step that has
+  // collapsed, energy grown beyond its limit over `initial_total_energy`); throws NumericalError.
+  virtual void check(double initial_total_energy) = 0;
+
+  virtual bool finished() const = 0;
+  virtual double endTime() const = 0;
+  virtual Clock clock() const = 0;
+  virtual Energies energies() const = 0;
+  virtual const PhaseTimers& timers() const = 0;
+
+  // What analysis and output read.
+  virtual const ParticleState& state() const = 0;
+  // The method's own node cloud, written to nodes.xdmf beside the points (empty for a method
+  // without nodes).
+  virtual const NodeStore& nodes() const = 0;
+  // Figures of the problem's size beyond points and nodes, for summary.json (OTM: mean_neighbours).
+  virtual std::vector<std::pair<std::string, double>> sizes() const = 0;
+  // Lines for the end-of-run report (OTM: points torn from their bodies); none if nothing to say.
+  virtual std::vector<std::string> notes() const = 0;
+};
+
+}  // namespace kessler

@@ -1,0 +1,93 @@
+// OTM seen through the method interface (solver/common/method.hpp): the run loop, the bench and
+// the analysis drive it only through these calls, so each must agree with the integrator it wraps.
+#include "core/error.hpp"
+#include "geometry/structured_mesh.hpp"
+#include "material/neo_hookean.hpp"
+#include "solver/common/method.hpp"
+#include "solver/otm/integrator.hpp"
+#include "solver/otm/otm_method.hpp"
+#include "solver/otm/setup.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <limits>
+#include <memory>
+
+namespace kessler::otm {
+namespace {
+
+Model cube() {
+  NeoHookeanParameters p;
+  p.density = 2700.0;
+  p.youngs_modulus = 70e9;
+  p.poisson_ratio = 0.33;
+  const geometry::Discretisation disc = geometry::discretise(
+      geometry::structuredBoxMesh(geometry::Box{Vec3(0, 0, 0), Vec3(3e-3, 2e-3, 2e-3)}, {3, 2, 2}));
+  Model model;
+  addBody(model, "cube", std::make_shared<NeoHookean>("al", p), disc, Vec3(0, 0, -100.0));
+  return model;
+}
+
+Settings settings() {
+  Settings s;
+  s.end_time = 1e-5;
+  return s;
+}
+
+// Bitwise equality of two arrays of trivially copyable values.
+template <class T>
+bool same(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
+}
+
+TEST(OtmMethod, StepsExactlyAsItsIntegrator) {
+  Model reference_model = cube();
+  Integrator reference(reference_model, settings());
+  reference.initialise();
+  const std::unique_ptr<Method> method = std::make_unique<OtmMethod>(cube(), settings());
+  method->initialise();
+  EXPECT_STREQ(method->name(), "otm");
+  EXPECT_EQ(method->clock().steps, 0);
+  EXPECT_EQ(method->clock().dt_next, reference.nextStep());
+  for (int s = 0; s < 5; ++s) {
+    reference.step();
+    method->step();
+    method->check(reference.energies().total());
+  }
+  const Clock clock = method->clock();
+  EXPECT_EQ(clock.steps, 5);
+  EXPECT_EQ(clock.time, reference.time());
+  EXPECT_EQ(clock.dt_last, reference.lastStep());
+  EXPECT_EQ(clock.dt_next, reference.nextStep());
+  EXPECT_EQ(clock.dt_initial, reference.initialStep());
+  EXPECT_EQ(method->endTime(), settings().end_time);
+  EXPECT_FALSE(method->finished());
+  const Energies a = method->energies(), b = reference.energies();
+  EXPECT_EQ(a.kinetic, b.kinetic);
+  EXPECT_EQ(a.internal, b.internal);
+  EXPECT_EQ(a.momentum, b.momentum);
+  EXPECT_TRUE(same(method->state().points.x, reference_model.points.x));
+  EXPECT_TRUE(same(method->state().points.stress, reference_model.points.stress));
+  EXPECT_TRUE(same(method->nodes().x, reference_model.nodes.x));
+  EXPECT_EQ(method->state().bodies.size(), 1u);
+  EXPECT_EQ(method->timers().totals().size(), reference.timers().totals().size());
+}
+
+TEST(OtmMethod, ReportsItsNeighboursAndItsHealth) {
+  OtmMethod method(cube(), settings());
+  method.initialise();
+  method.step();
+  const auto sizes = method.sizes();
+  ASSERT_EQ(sizes.size(), 1u);
+  EXPECT_EQ(sizes[0].first, "mean_neighbours");
+  const Model& model = method.model();
+  EXPECT_DOUBLE_EQ(sizes[0].second, static_cast<double>(model.connectivity.node.size()) / model.points.owned);
+  EXPECT_TRUE(method.notes().empty());  // nothing torn
+  // A healthy state passes; energy grown far beyond the first total stops the run.
+  EXPECT_NO_THROW(method.check(method.energies().total()));
+  EXPECT_THROW(method.check(1e-3 * method.energies().total()), NumericalError);
+}
+
+}  // namespace
+}  // namespace kessler::otm
