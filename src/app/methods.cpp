@@ -1,7 +1,6 @@
 #include "app/methods.hpp"
 
 #include "app/run_folder.hpp"
-#include "core/error.hpp"
 #include "solver/otm/otm_method.hpp"
 #include "solver/otm/setup.hpp"
 
@@ -18,12 +17,6 @@ std::vector<otm::BodySetup> bodySetups(const io::RunConfig& config) {
   return bodies;
 }
 
-const otm::OtmMethod& asOtm(const Method& method) {
-  const auto* otm = dynamic_cast<const otm::OtmMethod*>(&method);
-  KESSLER_VERIFY(otm != nullptr, "checkpoint: no writer for the method '{}'", method.name());
-  return *otm;
-}
-
 }  // namespace
 
 std::unique_ptr<Method> buildMethod(const io::RunConfig& config) {
@@ -32,20 +25,14 @@ std::unique_ptr<Method> buildMethod(const io::RunConfig& config) {
 
 std::unique_ptr<Method> restoreMethod(const io::RunConfig& config, const std::filesystem::path& file,
                                       io::RunLoopState& loop) {
-  otm::Model model;
-  const io::Checkpoint c = io::readCheckpoint(file, model, deckMaterials(config));
-  auto method = std::make_unique<otm::OtmMethod>(std::move(model), config.solver);
-  method->integrator().restore(c.integrator);
-  loop = c.loop;
-  return method;
-}
-
-void saveMethod(const Method& method, const std::filesystem::path& file, const io::RunLoopState& loop) {
-  const otm::OtmMethod& otm = asOtm(method);
-  io::Checkpoint c;
-  c.integrator = otm.integrator().state();
-  c.loop = loop;
-  io::writeCheckpoint(file, otm.model(), c);
+  io::Restored restored =
+      io::readCheckpoint(file, deckMaterials(config), [&](ParticleState&& state) -> std::unique_ptr<Method> {
+        otm::Model model;
+        static_cast<ParticleState&>(model) = std::move(state);
+        return std::make_unique<otm::OtmMethod>(std::move(model), config.solver);
+      });
+  loop = std::move(restored.loop);
+  return std::move(restored.method);
 }
 
 }  // namespace kessler::app

@@ -214,7 +214,7 @@ void Run::checkpoint() {
   const io::RunLoopState loop{next_output_,        next_checkpoint_, previous_wall_seconds_ + wall_.seconds(),
                               record_.outputs,     record_.history,  writer_->pointGrids(),
                               writer_->nodeGrids()};
-  saveMethod(*method_, checkpoint_file_, loop);
+  io::writeCheckpoint(checkpoint_file_, *method_, loop);
   checkpoint_step_ = steps();
   since_checkpoint_.restart();
   checkpoint_seconds_ += watch.seconds();

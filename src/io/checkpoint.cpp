@@ -21,9 +21,6 @@ constexpr std::int64_t format_version = 5;
 // Vec3 and Mat3 are stored as runs of 3 and 9 doubles, straight from the store.
 static_assert(sizeof(Vec3) == 3 * sizeof(double));
 static_assert(sizeof(Mat3) == 9 * sizeof(double));
-static_assert(sizeof(Connectivity) == 6 * sizeof(std::vector<double>),
-              "Connectivity changed: check what io/checkpoint.cpp stores and rebuilds");
-
 // Values per entry of a stored type, and the plain number type it is made of.
 template <class T>
 struct Layout {
@@ -104,30 +101,75 @@ std::vector<HistoryRow> readHistoryRows(const Hdf5Reader& h5) {
   return history;
 }
 
-// Checks what the integrator would otherwise index blindly: a damaged or mismatched file must
-// be refused here, not crash the run later.
-void checkConsistency(const Hdf5Reader& h5, const otm::Model& model) {
-  const PointStore& points = model.points;
-  const NodeStore& nodes = model.nodes;
-  const Connectivity& conn = model.connectivity;
-  const auto bodies = static_cast<std::int32_t>(model.bodies.size());
-  for (const BodyInfo& b : model.bodies)
-    if (b.point_begin < 0 || b.point_begin > b.point_end || b.point_end > points.size() || b.node_begin < 0 ||
-        b.node_begin > b.node_end || b.node_end > nodes.size())
-      h5.fail(fmt::format("use body '{}': its point or node range does not fit the stores", b.name));
+// Checks what a method would otherwise index blindly: a damaged or mismatched file must be
+// refused here, not crash the run later. (The method checks its own part in Method::load.)
+void checkConsistency(const Hdf5Reader& h5, const ParticleState& state) {
+  const PointStore& points = state.points;
+  const auto bodies = static_cast<std::int32_t>(state.bodies.size());
+  for (const BodyInfo& b : state.bodies)
+    if (b.point_begin < 0 || b.point_begin > b.point_end || b.point_end > points.size())
+      h5.fail(fmt::format("use body '{}': its point range does not fit the store", b.name));
   for (LocalIndex p = 0; p < points.size(); ++p)
     if (points.body[p] < 0 || points.body[p] >= bodies) h5.fail(fmt::format("use point {}: no such body", p));
-  for (LocalIndex a = 0; a < nodes.size(); ++a)
-    if (nodes.body[a] < 0 || nodes.body[a] >= bodies) h5.fail(fmt::format("use node {}: no such body", a));
-  if (conn.offset.size() != static_cast<std::size_t>(points.size()) + 1 || conn.offset.front() != 0 ||
-      static_cast<std::size_t>(conn.offset.back()) != conn.node.size() || conn.N.size() != conn.node.size() ||
-      conn.dN.size() != conn.node.size())
-    h5.fail("use the connectivity: its sizes do not match the points");
-  for (std::size_t p = 1; p < conn.offset.size(); ++p)
-    if (conn.offset[p] < conn.offset[p - 1]) h5.fail("use the connectivity: offsets decrease");
-  for (LocalIndex a : conn.node)
-    if (a < 0 || a >= nodes.size()) h5.fail(fmt::format("use the connectivity: node {} does not exist", a));
 }
+
+// The method's part of the file, through the interface it sees (solver/common/state_archive.hpp).
+class Hdf5StateWriter final : public StateWriter {
+ public:
+  explicit Hdf5StateWriter(Hdf5Writer& h5) : h5_(h5) {}
+  void group(const std::string& name) override { h5_.createGroup(name); }
+  void scalar(const std::string& name, double value) override { h5_.writeAttribute(name, value); }
+  void scalar(const std::string& name, std::int64_t value) override { h5_.writeAttribute(name, value); }
+  void array(const std::string& name, const std::vector<double>& values) override { writeArray(h5_, name, values); }
+  void array(const std::string& name, const std::vector<std::int32_t>& values) override {
+    writeArray(h5_, name, values);
+  }
+  void array(const std::string& name, const std::vector<std::int64_t>& values) override {
+    writeArray(h5_, name, values);
+  }
+  void array(const std::string& name, const std::vector<std::uint8_t>& values) override {
+    writeArray(h5_, name, values);
+  }
+  void array(const std::string& name, const std::vector<Vec3>& values) override { writeArray(h5_, name, values); }
+  void array(const std::string& name, const std::vector<Mat3>& values) override { writeArray(h5_, name, values); }
+
+ private:
+  Hdf5Writer& h5_;
+};
+
+class Hdf5StateReader final : public StateReader {
+ public:
+  explicit Hdf5StateReader(const Hdf5Reader& h5) : h5_(h5) {}
+  double doubleScalar(const std::string& name) const override { return h5_.readDoubleAttribute(name); }
+  std::int64_t intScalar(const std::string& name) const override { return h5_.readInt64Attribute(name); }
+  std::size_t length(const std::string& name) const override {
+    const std::vector<hsize_t> shape = h5_.shape(name);
+    if (shape.empty()) h5_.fail(fmt::format("use '{}': it is not an array", name));
+    return shape[0];
+  }
+  void array(const std::string& name, std::vector<double>& values, std::size_t count) const override {
+    readArray(h5_, name, values, count);
+  }
+  void array(const std::string& name, std::vector<std::int32_t>& values, std::size_t count) const override {
+    readArray(h5_, name, values, count);
+  }
+  void array(const std::string& name, std::vector<std::int64_t>& values, std::size_t count) const override {
+    readArray(h5_, name, values, count);
+  }
+  void array(const std::string& name, std::vector<std::uint8_t>& values, std::size_t count) const override {
+    readArray(h5_, name, values, count);
+  }
+  void array(const std::string& name, std::vector<Vec3>& values, std::size_t count) const override {
+    readArray(h5_, name, values, count);
+  }
+  void array(const std::string& name, std::vector<Mat3>& values, std::size_t count) const override {
+    readArray(h5_, name, values, count);
+  }
+  [[noreturn]] void fail(const std::string& what) const override { h5_.fail(what); }
+
+ private:
+  const Hdf5Reader& h5_;
+};
 
 }  // namespace
 
@@ -135,24 +177,16 @@ std::filesystem::path checkpointPath(const std::filesystem::path& run_dir) {
   return run_dir / "checkpoint.h5";
 }
 
-void writeCheckpoint(const std::filesystem::path& file, const otm::Model& model, const Checkpoint& checkpoint) {
+void writeCheckpoint(const std::filesystem::path& file, const Method& method, const RunLoopState& loop) {
+  const ParticleState& model = method.state();
   AtomicFile target(file);
   Hdf5Writer h5(target.temporaryPath());
   h5.writeAttribute("kessler_checkpoint_format", format_version);
-  const otm::IntegratorState& s = checkpoint.integrator;
-  h5.writeAttribute("integrator_time", s.time);
-  h5.writeAttribute("integrator_dt_last", s.dt_last);
-  h5.writeAttribute("integrator_dt_next", s.dt_next);
-  h5.writeAttribute("integrator_dt_initial", s.dt_initial);
-  h5.writeAttribute("integrator_steps", static_cast<std::int64_t>(s.steps));
-  h5.writeAttribute("integrator_stabilisation_energy", s.stabilisation_energy);
-  const RunLoopState& loop = checkpoint.loop;
   h5.writeAttribute("run_next_output", loop.next_output);
   h5.writeAttribute("run_next_checkpoint", loop.next_checkpoint);
   h5.writeAttribute("run_wall_seconds", loop.wall_seconds);
   h5.writeAttribute("run_outputs", static_cast<std::int64_t>(loop.outputs));
   h5.writeAttribute("points_owned", static_cast<std::int64_t>(model.points.owned));
-  h5.writeAttribute("nodes_owned", static_cast<std::int64_t>(model.nodes.owned));
 
   h5.createGroup("/points");
   PointStore::fields(model.points, [&](const char* name, const auto& values, const auto&) {
@@ -160,20 +194,6 @@ void writeCheckpoint(const std::filesystem::path& file, const otm::Model& model,
                    values.size(), model.points.x.size());
     writeArray(h5, fmt::format("/points/{}", name), values);
   });
-  h5.createGroup("/nodes");
-  NodeStore::fields(model.nodes, [&](const char* name, const auto& values, const auto&) {
-    KESSLER_VERIFY(values.size() == model.nodes.x.size(), "checkpoint: nodes.{} has {} values for {} nodes", name,
-                   values.size(), model.nodes.x.size());
-    writeArray(h5, fmt::format("/nodes/{}", name), values);
-  });
-  // The transpose (node -> entries) is rebuilt on reading: it is a pure function of these.
-  const Connectivity& conn = model.connectivity;
-  h5.createGroup("/connectivity");
-  writeArray(h5, "/connectivity/offset", conn.offset);
-  writeArray(h5, "/connectivity/node", conn.node);
-  writeArray(h5, "/connectivity/N", conn.N);
-  writeArray(h5, "/connectivity/dN", conn.dN);
-
   // Fragment links (analysis): the initial mesh adjacency and its lengths, which a restarted run
   // could not rebuild from the deformed state.
   h5.createGroup("/adjacency");
@@ -185,12 +205,14 @@ void writeCheckpoint(const std::filesystem::path& file, const otm::Model& model,
   const std::string meta = checkpointMetaText(model, loop);
   h5.writeDataset("/run/meta", std::span(reinterpret_cast<const std::uint8_t*>(meta.data()), meta.size()),
                   {meta.size()});
+  Hdf5StateWriter own(h5);
+  method.save(own);
   h5.close();
   target.commit();
 }
 
-Checkpoint readCheckpoint(const std::filesystem::path& file, otm::Model& model,
-                          const std::vector<MaterialPtr>& materials) {
+Restored readCheckpoint(const std::filesystem::path& file, const std::vector<MaterialPtr>& materials,
+                        const MethodFactory& make) {
   const Hdf5Reader h5(file);
   std::int64_t version = 0;
   try {
@@ -201,44 +223,25 @@ Checkpoint readCheckpoint(const std::filesystem::path& file, otm::Model& model,
   if (version != format_version)
     throw Error(fmt::format("'{}' is a checkpoint of format {}, this Kessler reads format {}", file.string(), version,
                             format_version));
-  Checkpoint c;
-  c.integrator.time = h5.readDoubleAttribute("integrator_time");
-  c.integrator.dt_last = h5.readDoubleAttribute("integrator_dt_last");
-  c.integrator.dt_next = h5.readDoubleAttribute("integrator_dt_next");
-  c.integrator.dt_initial = h5.readDoubleAttribute("integrator_dt_initial");
-  c.integrator.steps = h5.readInt64Attribute("integrator_steps");
-  c.integrator.stabilisation_energy = h5.readDoubleAttribute("integrator_stabilisation_energy");
-  c.loop.next_output = h5.readDoubleAttribute("run_next_output");
-  c.loop.next_checkpoint = h5.readDoubleAttribute("run_next_checkpoint");
-  c.loop.wall_seconds = h5.readDoubleAttribute("run_wall_seconds");
-  c.loop.outputs = h5.readInt64Attribute("run_outputs");
-  c.loop.history = readHistoryRows(h5);
+  const Hdf5StateReader own(h5);
+  Restored r;
+  RunLoopState& loop = r.loop;
+  loop.next_output = h5.readDoubleAttribute("run_next_output");
+  loop.next_checkpoint = h5.readDoubleAttribute("run_next_checkpoint");
+  loop.wall_seconds = h5.readDoubleAttribute("run_wall_seconds");
+  loop.outputs = h5.readInt64Attribute("run_outputs");
+  loop.history = readHistoryRows(h5);
 
-  auto length = [&](const std::string& name) -> std::size_t {
-    const std::vector<hsize_t> shape = h5.shape(name);
-    if (shape.empty()) h5.fail(fmt::format("use '{}': it is not an array", name));
-    return shape[0];
-  };
-  model = otm::Model{};
-  const std::size_t np = length("/points/x"), nn = length("/nodes/x");
+  ParticleState model;
+  const std::size_t np = own.length("/points/x");
   PointStore::fields(model.points, [&](const char* name, auto& values, const auto&) {
     readArray(h5, fmt::format("/points/{}", name), values, np);
   });
-  NodeStore::fields(model.nodes, [&](const char* name, auto& values, const auto&) {
-    readArray(h5, fmt::format("/nodes/{}", name), values, nn);
-  });
   model.points.owned = static_cast<LocalIndex>(h5.readInt64Attribute("points_owned"));
-  model.nodes.owned = static_cast<LocalIndex>(h5.readInt64Attribute("nodes_owned"));
-  if (model.points.owned != model.points.size() || model.nodes.owned != model.nodes.size())
-    h5.fail("use the stores: owned counts differ from the stored sizes");
-  Connectivity& conn = model.connectivity;
-  readArray(h5, "/connectivity/offset", conn.offset, np + 1);
-  const std::size_t entries = length("/connectivity/node");
-  readArray(h5, "/connectivity/node", conn.node, entries);
-  readArray(h5, "/connectivity/N", conn.N, entries);
-  readArray(h5, "/connectivity/dN", conn.dN, entries);
+  if (model.points.owned != model.points.size())
+    h5.fail("use the points: the owned count differs from the stored size");
 
-  const std::size_t links = length("/adjacency/pairs");
+  const std::size_t links = own.length("/adjacency/pairs");
   readArray(h5, "/adjacency/pairs", model.adjacency, links);
   readArray(h5, "/adjacency/length0", model.adjacency_length0, links);
   for (const auto& [i, j] : model.adjacency)
@@ -247,10 +250,11 @@ Checkpoint readCheckpoint(const std::filesystem::path& file, otm::Model& model,
                           model.points.size()));
 
   const std::vector<std::uint8_t> meta = h5.read<std::uint8_t>("/run/meta");
-  readCheckpointMeta(std::string(meta.begin(), meta.end()), file, materials, model, c.loop);
+  readCheckpointMeta(std::string(meta.begin(), meta.end()), file, materials, model, loop);
   checkConsistency(h5, model);
-  conn.buildTranspose(model.nodes.size());
-  return c;
+  r.method = make(std::move(model));
+  r.method->load(own);
+  return r;
 }
 
 }  // namespace kessler::io

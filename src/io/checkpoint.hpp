@@ -1,19 +1,22 @@
 #pragma once
 // Checkpoints: the complete state of a run in one HDF5 file (docs/running.md), so that
 // `kessler run --restart DIR` continues bitwise as the run would have gone on without stopping.
-// The complete state is the Model (every node and point field, the bodies, the connectivity
-// with its shape functions: recomputing those from a warm start would change the last bits),
-// the integrator's own scalars and the run loop's bookkeeping (output schedule, history, the
-// outputs the XDMF series lists). Materials are not stored: they are rebuilt from the run's
-// resolved deck and matched by name.
+// The complete state is the shared particle state (every point field, the bodies, the links),
+// the method's own state, which it writes and reads itself (Method::save, Method::load; OTM: its
+// nodes, the connectivity with its shape functions, since recomputing those from a warm start
+// would change the last bits, and its clock), and the run loop's bookkeeping (output schedule,
+// history, the outputs the XDMF series lists). Materials are not stored: they are rebuilt from
+// the run's resolved deck and matched by name.
 //
 // The file is written to a temporary name and renamed over the previous checkpoint, so a run
 // killed at any moment (SIGKILL included) leaves the previous complete checkpoint in place.
 #include "io/summary.hpp"
 #include "io/xdmf.hpp"
-#include "solver/otm/integrator.hpp"
+#include "solver/common/method.hpp"
 
 #include <filesystem>
+#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -29,8 +32,11 @@ struct RunLoopState {
   std::vector<XdmfGrid> point_grids, node_grids;  // the outputs listed in points.xdmf, nodes.xdmf
 };
 
-struct Checkpoint {
-  otm::IntegratorState integrator;
+// The method for a restored shared state, not yet loaded (the factory, app/methods.cpp).
+using MethodFactory = std::function<std::unique_ptr<Method>(ParticleState&&)>;
+
+struct Restored {
+  std::unique_ptr<Method> method;  // loaded: ready to step
   RunLoopState loop;
 };
 
@@ -38,12 +44,13 @@ struct Checkpoint {
 std::filesystem::path checkpointPath(const std::filesystem::path& run_dir);
 
 // Writes `file` atomically (temporary file, then rename).
-void writeCheckpoint(const std::filesystem::path& file, const otm::Model& model, const Checkpoint& checkpoint);
+void writeCheckpoint(const std::filesystem::path& file, const Method& method, const RunLoopState& loop);
 
-// Restores the model from `file`: stores, bodies and connectivity; model.materials come from
-// `materials` (the deck's, in any order), matched by name. Throws kessler::Error naming the file
-// and what is wrong if the file is not a complete Kessler checkpoint or does not fit the deck.
-Checkpoint readCheckpoint(const std::filesystem::path& file, otm::Model& model,
-                          const std::vector<MaterialPtr>& materials);
+// Restores a run from `file`: the shared state (its materials from `materials`, the deck's, in
+// any order, matched by name), then the method `make` builds for it, which loads its own part.
+// Throws kessler::Error naming the file and what is wrong if the file is not a complete Kessler
+// checkpoint or does not fit the deck.
+Restored readCheckpoint(const std::filesystem::path& file, const std::vector<MaterialPtr>& materials,
+                        const MethodFactory& make);
 
 }  // namespace kessler::io

@@ -8,6 +8,7 @@
 #include "particles/store.hpp"
 #include "solver/common/energies.hpp"
 #include "solver/common/particle_state.hpp"
+#include "solver/common/state_archive.hpp"
 
 #include <string>
 #include <utility>
@@ -54,6 +55,13 @@ class Method {
   virtual std::vector<std::pair<std::string, double>> sizes() const = 0;
   // Lines for the end-of-run report (OTM: points torn from their bodies); none if nothing to say.
   virtual std::vector<std::string> notes() const = 0;
+
+  // The method's own part of a checkpoint: everything beyond the shared state that a restart
+  // needs to continue bit for bit (its discretisation, its clock). load() runs on a method built
+  // for the restored shared state, instead of initialise(), and refuses a part that does not fit
+  // it (StateReader::fail).
+  virtual void save(StateWriter& out) const = 0;
+  virtual void load(const StateReader& in) = 0;
 };
 
 }  // namespace kessler

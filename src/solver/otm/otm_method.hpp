@@ -28,6 +28,8 @@ class OtmMethod final : public Method {
   const NodeStore& nodes() const override { return model_.nodes; }
   std::vector<std::pair<std::string, double>> sizes() const override;
   std::vector<std::string> notes() const override;
+  void save(StateWriter& out) const override;
+  void load(const StateReader& in) override;
 
   // OTM's own state, for its checkpoint and its verification problems.
   const Model& model() const { return model_; }

@@ -8,6 +8,7 @@
 #include "io/hdf5_reader.hpp"
 #include "material/neo_hookean.hpp"
 #include "solver/otm/integrator.hpp"
+#include "solver/otm/otm_method.hpp"
 #include "solver/otm/setup.hpp"
 
 #include <gtest/gtest.h>
@@ -15,6 +16,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 
 namespace kessler::io {
 namespace {
@@ -46,6 +48,25 @@ otm::Settings settings() {
   otm::Settings s;
   s.end_time = 1e-5;
   return s;
+}
+
+// OTM for a restored shared state, as the program's factory builds it (app/methods.cpp).
+std::unique_ptr<Method> otmFor(ParticleState&& state) {
+  otm::Model model;
+  static_cast<ParticleState&>(model) = std::move(state);
+  return std::make_unique<otm::OtmMethod>(std::move(model), settings());
+}
+
+const otm::OtmMethod& asOtm(const Method& method) {
+  return dynamic_cast<const otm::OtmMethod&>(method);
+}
+
+// A method over two blocks, initialised and `steps` steps on.
+std::unique_ptr<otm::OtmMethod> twoBlocksAfter(const MaterialPtr& material, int steps) {
+  auto method = std::make_unique<otm::OtmMethod>(twoBlocks(material), settings());
+  method->initialise();
+  for (int i = 0; i < steps; ++i) method->step();
+  return method;
 }
 
 template <class T>
@@ -91,14 +112,15 @@ class CheckpointTest : public ::testing::Test {
   MaterialPtr material_ = aluminium();
 };
 
-RunLoopState someLoopState(const otm::Integrator& integrator) {
+RunLoopState someLoopState(const Method& method) {
   RunLoopState loop;
   loop.next_output = 1.25e-6;
   loop.next_checkpoint = 3e-6;
   loop.wall_seconds = 12.5;
   loop.outputs = 2;
-  loop.history.push_back({0, 0.0, 0.0, integrator.energies()});
-  loop.history.push_back({integrator.steps(), integrator.time(), integrator.lastStep(), integrator.energies()});
+  const Clock clock = method.clock();
+  loop.history.push_back({0, 0.0, 0.0, method.energies()});
+  loop.history.push_back({clock.steps, clock.time, clock.dt_last, method.energies()});
   XdmfGrid grid{.name = "points_00000000", .time = 0.1, .vertices = 3, .geometry = {}, .attributes = {}};
   grid.geometry = xdmfItem<double>({3, 3}, "fields/fields_00000000.h5:/points/position");
   grid.attributes.push_back(
@@ -109,16 +131,14 @@ RunLoopState someLoopState(const otm::Integrator& integrator) {
 }
 
 TEST_F(CheckpointTest, RestoresTheModelAndTheRunStateBitwise) {
-  otm::Model model = twoBlocks(material_);
-  otm::Integrator integrator(model, settings());
-  integrator.initialise();
-  for (int i = 0; i < 5; ++i) integrator.step();
-  const Checkpoint written{integrator.state(), someLoopState(integrator)};
-  writeCheckpoint(dir_ / "checkpoint.h5", model, written);
+  const std::unique_ptr<otm::OtmMethod> method = twoBlocksAfter(material_, 5);
+  const otm::Model& model = method->model();
+  const RunLoopState written = someLoopState(*method);
+  writeCheckpoint(dir_ / "checkpoint.h5", *method, written);
   EXPECT_FALSE(fs::exists(dir_ / "checkpoint.h5.tmp"));
 
-  otm::Model restored;
-  const Checkpoint read = readCheckpoint(dir_ / "checkpoint.h5", restored, {material_});
+  const Restored read = readCheckpoint(dir_ / "checkpoint.h5", {material_}, otmFor);
+  const otm::Model& restored = asOtm(*read.method).model();
   EXPECT_EQ(differences(model, restored), 0);
   ASSERT_EQ(restored.bodies.size(), 2u);
   EXPECT_EQ(restored.bodies[1].name, "flyer");
@@ -128,44 +148,35 @@ TEST_F(CheckpointTest, RestoresTheModelAndTheRunStateBitwise) {
   EXPECT_EQ(restored.bodies[0].touched, model.bodies[0].touched);
   EXPECT_EQ(restored.bodies[1].touched, model.bodies[1].touched);
   EXPECT_EQ(restored.materials.at(0), material_);
-  EXPECT_EQ(read.integrator.steps, 5);
-  EXPECT_EQ(std::memcmp(&read.integrator, &written.integrator, sizeof(otm::IntegratorState)), 0);
-  EXPECT_EQ(read.loop.next_output, written.loop.next_output);
-  EXPECT_EQ(read.loop.next_checkpoint, written.loop.next_checkpoint);
+  EXPECT_EQ(read.method->clock().steps, 5);
+  const otm::IntegratorState sw = method->integrator().state(), sr = asOtm(*read.method).integrator().state();
+  EXPECT_EQ(std::memcmp(&sr, &sw, sizeof(otm::IntegratorState)), 0);
+  EXPECT_EQ(read.loop.next_output, written.next_output);
+  EXPECT_EQ(read.loop.next_checkpoint, written.next_checkpoint);
   EXPECT_EQ(read.loop.outputs, 2);
   ASSERT_EQ(read.loop.history.size(), 2u);
   EXPECT_EQ(read.loop.history[1].step, 5);
-  EXPECT_EQ(std::memcmp(&read.loop.history[1].energies, &written.loop.history[1].energies, sizeof(Energies)), 0);
-  EXPECT_EQ(temporalPolyvertexXdmf("p", read.loop.point_grids), temporalPolyvertexXdmf("p", written.loop.point_grids));
+  EXPECT_EQ(std::memcmp(&read.loop.history[1].energies, &written.history[1].energies, sizeof(Energies)), 0);
+  EXPECT_EQ(temporalPolyvertexXdmf("p", read.loop.point_grids), temporalPolyvertexXdmf("p", written.point_grids));
   EXPECT_EQ(read.loop.node_grids.size(), 2u);
 }
 
 TEST_F(CheckpointTest, ARestartedRunIsBitwiseTheUninterruptedRun) {
-  otm::Model straight = twoBlocks(material_);
-  otm::Integrator a(straight, settings());
-  a.initialise();
-  for (int i = 0; i < 6; ++i) a.step();
+  const std::unique_ptr<otm::OtmMethod> straight = twoBlocksAfter(material_, 6);
 
-  otm::Model first = twoBlocks(material_);
-  otm::Integrator b(first, settings());
-  b.initialise();
-  for (int i = 0; i < 3; ++i) b.step();
-  writeCheckpoint(dir_ / "checkpoint.h5", first, {b.state(), someLoopState(b)});
+  const std::unique_ptr<otm::OtmMethod> first = twoBlocksAfter(material_, 3);
+  writeCheckpoint(dir_ / "checkpoint.h5", *first, someLoopState(*first));
 
-  otm::Model resumed;
-  const Checkpoint c = readCheckpoint(dir_ / "checkpoint.h5", resumed, {material_});
-  otm::Integrator r(resumed, settings());
-  r.restore(c.integrator);
-  for (int i = 0; i < 3; ++i) r.step();
-  EXPECT_EQ(differences(straight, resumed), 0);
-  const otm::IntegratorState sa = a.state(), sr = r.state();
+  const Restored c = readCheckpoint(dir_ / "checkpoint.h5", {material_}, otmFor);
+  for (int i = 0; i < 3; ++i) c.method->step();
+  EXPECT_EQ(differences(straight->model(), asOtm(*c.method).model()), 0);
+  const otm::IntegratorState sa = straight->integrator().state(), sr = asOtm(*c.method).integrator().state();
   EXPECT_EQ(std::memcmp(&sa, &sr, sizeof(otm::IntegratorState)), 0);
 }
 
 std::string errorOf(const fs::path& file, const std::vector<MaterialPtr>& materials) {
-  otm::Model model;
   try {
-    readCheckpoint(file, model, materials);
+    readCheckpoint(file, materials, otmFor);
   } catch (const Error& e) {
     return e.what();
   }
@@ -173,11 +184,10 @@ std::string errorOf(const fs::path& file, const std::vector<MaterialPtr>& materi
 }
 
 TEST_F(CheckpointTest, RefusesWhatIsNotACompleteCheckpointOfThisRun) {
-  otm::Model model = twoBlocks(material_);
-  otm::Integrator integrator(model, settings());
-  integrator.initialise();
+  const std::unique_ptr<otm::OtmMethod> method = twoBlocksAfter(material_, 0);
+  const otm::Model& model = method->model();
   const fs::path file = dir_ / "checkpoint.h5";
-  writeCheckpoint(file, model, {integrator.state(), someLoopState(integrator)});
+  writeCheckpoint(file, *method, someLoopState(*method));
 
   EXPECT_NE(errorOf(dir_ / "none.h5", {material_}).find("no such file"), std::string::npos);
   // A material the deck no longer has.
@@ -202,19 +212,19 @@ TEST_F(CheckpointTest, RefusesWhatIsNotACompleteCheckpointOfThisRun) {
 }
 
 TEST_F(CheckpointTest, AFailedWriteKeepsThePreviousCheckpoint) {
-  otm::Model model = twoBlocks(material_);
-  otm::Integrator integrator(model, settings());
-  integrator.initialise();
+  const std::unique_ptr<otm::OtmMethod> method = twoBlocksAfter(material_, 0);
   const fs::path file = dir_ / "checkpoint.h5";
-  writeCheckpoint(file, model, {integrator.state(), someLoopState(integrator)});
+  writeCheckpoint(file, *method, someLoopState(*method));
   // A store whose fields disagree in length cannot be written; the old file must survive.
-  otm::Model broken = model;
-  broken.points.energy.pop_back();
-  EXPECT_THROW(writeCheckpoint(file, broken, {integrator.state(), someLoopState(integrator)}), Error);
+  otm::Model broken_model = method->model();
+  broken_model.points.energy.pop_back();
+  const otm::OtmMethod broken(std::move(broken_model), settings());
+  EXPECT_THROW(writeCheckpoint(file, broken, someLoopState(*method)), Error);
   EXPECT_FALSE(fs::exists(dir_ / "checkpoint.h5.tmp"));
-  otm::Model restored;
-  EXPECT_NO_THROW(readCheckpoint(file, restored, {material_}));
-  EXPECT_EQ(differences(model, restored), 0);
+  Restored restored;
+  EXPECT_NO_THROW(restored = readCheckpoint(file, {material_}, otmFor));
+  ASSERT_TRUE(restored.method);
+  EXPECT_EQ(differences(method->model(), asOtm(*restored.method).model()), 0);
 }
 
 }  // namespace
