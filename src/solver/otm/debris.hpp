@@ -1,6 +1,6 @@
 #pragma once
 // Debris that strikes as matter (docs/theory.md §9). Debris (failed material released from its
-// body, solver/otm/release.hpp) carries no stress and flies ballistically until it reaches the
+// body, solver/common/release.hpp) carries no stress and flies ballistically until it reaches the
 // nodes of a body it may hit. Then a contact force between it and each node it overlaps pushes it
 // back: a spring whose stiffness is the two materials' bulk moduli in series over the debris' face,
 // so that a fragment striking a wall stops within about the time a wave takes to cross it and loads

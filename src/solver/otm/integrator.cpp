@@ -2,10 +2,10 @@
 
 #include "core/error.hpp"
 #include "core/reduce.hpp"
+#include "solver/common/release.hpp"
 #include "solver/otm/debris.hpp"
 #include "solver/otm/integrator_assembly.hpp"
 #include "solver/otm/integrator_ordering.hpp"
-#include "solver/otm/release.hpp"
 #include "solver/otm/volume_patch.hpp"
 
 #include <Eigen/Eigenvalues>
@@ -18,7 +18,11 @@
 namespace kessler::otm {
 
 Integrator::Integrator(Model& model, const Settings& settings)
-    : model_(model), settings_(settings), neighbourhoods_(settings), erosion_(settings), release_(settings) {
+    : model_(model),
+      settings_(settings),
+      neighbourhoods_(settings),
+      erosion_(settings.erosion_radius),
+      release_(settings.erosion_radius) {
   KESSLER_VERIFY(settings.cfl > 0.0 && settings.cfl <= 1.0, "cfl must lie in (0, 1], got {}", settings.cfl);
   KESSLER_VERIFY(settings.end_time > 0.0, "end_time must be positive, got {}", settings.end_time);
   std::vector<double> limits;

@@ -6,11 +6,11 @@
 #include "core/timer.hpp"
 #include "solver/common/energies.hpp"
 #include "solver/otm/debris.hpp"
-#include "solver/otm/eigenerosion.hpp"
+#include "solver/common/eigenerosion.hpp"
 #include "solver/otm/integrator_assembly.hpp"
 #include "solver/otm/model.hpp"
 #include "solver/otm/neighbourhoods.hpp"
-#include "solver/otm/release.hpp"
+#include "solver/common/release.hpp"
 #include "solver/otm/settings.hpp"
 #include "solver/otm/volume_patch.hpp"
 

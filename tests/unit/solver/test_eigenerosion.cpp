@@ -1,10 +1,11 @@
-// Eigenerosion (solver/otm/eigenerosion.hpp): the cell-bounded pass erodes exactly the points
+// Eigenerosion (solver/common/eigenerosion.hpp): the cell-bounded pass erodes exactly the points
 // that the plain definition G_p = C_eps sum_B m_q W_q / sum_B m_q >= G_c erodes, evaluated by
 // brute force over all pairs, for two bodies with scattered energies (some near the threshold).
 #include "geometry/structured_mesh.hpp"
 #include "material/neo_hookean.hpp"
-#include "solver/otm/eigenerosion.hpp"
-#include "solver/otm/release.hpp"
+#include "solver/common/eigenerosion.hpp"
+#include "solver/common/release.hpp"
+#include "solver/otm/settings.hpp"
 #include "solver/otm/setup.hpp"
 
 #include <gtest/gtest.h>
@@ -66,7 +67,7 @@ TEST(Eigenerosion, ErodesExactlyThePointsOfTheDefinition) {
     expected[a] = erosionCalibration(eps, nu) * energy / mass >= gc;
   }
   const std::vector<std::uint8_t> before = points.eroded;
-  Eigenerosion erosion(settings);
+  Eigenerosion erosion(settings.erosion_radius);
   const LocalIndex count = erosion.apply(model);
 
   LocalIndex newly = 0, mismatches = 0;
@@ -115,10 +116,10 @@ TEST(Eigenerosion, DebrisTakesTheBallVelocityAndMomentumAndEnergyAreExact) {
   const std::vector<Vec3> v_before = points.v;
 
   // The points fail free of stress (the model is at rest), so they are released at once.
-  Eigenerosion erosion(settings);
+  Eigenerosion erosion(settings.erosion_radius);
   const LocalIndex failed = erosion.apply(model);
   ASSERT_GT(failed, 10);
-  ASSERT_EQ(DebrisRelease(settings).apply(model), failed);
+  ASSERT_EQ(DebrisRelease(settings.erosion_radius).apply(model), failed);
   EXPECT_LT((momentum(0) - before_a).norm(), 1e-12 * before_a.norm());
   EXPECT_LT((momentum(1) - before_b).norm(), 1e-12 * before_b.norm());
   // The kinetic energy the exchange takes stays in the debris as internal energy.
@@ -181,9 +182,9 @@ TEST(Eigenerosion, TheLastOfAnErodingRegionTakesTheMeanOfItsDebris) {
   const auto [momentum_before, energy_before] = total();
   const double scatter_before = scatter(intact);
 
-  Eigenerosion erosion(settings);
+  Eigenerosion erosion(settings.erosion_radius);
   erosion.apply(model);
-  DebrisRelease(settings).apply(model);
+  DebrisRelease(settings.erosion_radius).apply(model);
   for (LocalIndex q = 0; q < points.size(); ++q)
     if (points.body[q] == 0) {
       ASSERT_TRUE(points.debris(q));

@@ -1,12 +1,12 @@
-// Failed material and its release as debris (solver/otm/release.hpp, docs/theory.md §8): a failed
+// Failed material and its release as debris (solver/common/release.hpp, docs/theory.md §8): a failed
 // point stays in its body while it bears compression and is released once it bears none; a block
 // of failed material striking a wall pushes it (the wall takes momentum), where debris would pass
 // through; momentum stays exact throughout.
 #include "geometry/structured_mesh.hpp"
 #include "material/impact_material.hpp"
 #include "material/library.hpp"
+#include "solver/common/release.hpp"
 #include "solver/otm/integrator.hpp"
-#include "solver/otm/release.hpp"
 #include "solver/otm/setup.hpp"
 
 #include "momentum.hpp"
@@ -89,7 +89,7 @@ TEST(DebrisRelease, ReleasesOnlyTheFailedPointsThatBearNothing) {
     if ((p - block.point_begin) % 2 == 0) points.stress[p] = -1e9 * Mat3::Identity();
   }
   Settings settings;
-  const LocalIndex released = DebrisRelease(settings).apply(model);
+  const LocalIndex released = DebrisRelease(settings.erosion_radius).apply(model);
   EXPECT_EQ(released, (block.point_end - block.point_begin) / 2);
   for (LocalIndex p = block.point_begin; p < block.point_end; ++p) {
     const bool loaded = (p - block.point_begin) % 2 == 0;

@@ -1,22 +1,22 @@
-#include "solver/otm/eigenerosion.hpp"
+#include "solver/common/eigenerosion.hpp"
 
 #include "core/reduce.hpp"
 
 #include <algorithm>
 #include <limits>
 
-namespace kessler::otm {
+namespace kessler {
 
 double erosionCalibration(double eps, double nu) {
   return 64.0 * eps / (3.0 * (5.0 - 3.0 * nu));
 }
 
-bool Eigenerosion::active(const Model& model) const {
+bool Eigenerosion::active(const ParticleState& model) const {
   return std::any_of(model.materials.begin(), model.materials.end(),
                      [](const MaterialPtr& m) { return m->fractureEnergy() > 0.0; });
 }
 
-LocalIndex Eigenerosion::apply(Model& model) {
+LocalIndex Eigenerosion::apply(ParticleState& model) {
   if (!active(model)) return 0;
   PointStore& points = model.points;
   const LocalIndex np = points.owned;
@@ -42,7 +42,7 @@ LocalIndex Eigenerosion::apply(Model& model) {
   if (count == 0) return 0;
   candidate_eps_.resize(static_cast<std::size_t>(count));
   const double eps_sum = deterministicSum(count, 0.0, [&](LocalIndex k) {
-    candidate_eps_[k] = settings_.erosion_radius * points.spacing(candidate_[k]);
+    candidate_eps_[k] = erosion_radius_ * points.spacing(candidate_[k]);
     return candidate_eps_[k];
   });
   cells_.build(candidate_x_, count, eps_sum / count);
@@ -85,7 +85,7 @@ LocalIndex Eigenerosion::apply(Model& model) {
   for (LocalIndex p = 0; p < np; ++p) {
     if (!erode_[p]) continue;
     // Fractured: no strength and no tension from now on, but the pressure it is under stays
-    // (released as debris once it bears none: solver/otm/release.hpp).
+    // (released as debris once it bears none: solver/common/release.hpp).
     const double q = points.viscous_pressure[p];
     const double pressure = std::max(-points.stress[p].trace() / 3.0 - q, 0.0);
     points.fail(p);
@@ -107,4 +107,4 @@ double Eigenerosion::releaseRate(const PointStore& points, LocalIndex p, double 
   return erosionCalibration(eps, nu) * energy / mass;
 }
 
-}  // namespace kessler::otm
+}  // namespace kessler

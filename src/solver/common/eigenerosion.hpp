@@ -9,32 +9,32 @@
 // gives <W> = 3 (5 - 3 nu) K^2 / (64 E eps), hence C_eps = 64 eps / (3 (5 - 3 nu)) makes
 // G_p = K^2 / E = G_c exactly at Griffith's load (docs/theory.md §8).
 // A point that erodes fails: it loses its strength and its tension but keeps the pressure it is
-// under, and leaves its body as debris once it bears none (solver/otm/release.hpp).
+// under, and leaves its body as debris once it bears none (solver/common/release.hpp).
 #include "search/cell_list.hpp"
-#include "solver/otm/model.hpp"
-#include "solver/otm/settings.hpp"
+#include "solver/common/particle_state.hpp"
 
 #include <vector>
 
-namespace kessler::otm {
+namespace kessler {
 
 // C_eps for a ball of radius eps and Poisson's ratio nu.
 double erosionCalibration(double eps, double nu);
 
 class Eigenerosion {
  public:
-  explicit Eigenerosion(const Settings& settings) : settings_(settings) {}
+  // erosion_radius: the radius of the ball B_eps as a multiple of the point spacing.
+  explicit Eigenerosion(double erosion_radius) : erosion_radius_(erosion_radius) {}
   // Evaluates G_p for every intact point of an eroding material and fails those with
   // G_p >= G_c (PointStore::fail, stress reduced to its compression). Decisions use the state
   // before this call, so the result does not depend on the thread count. Returns the number of
   // points that failed.
-  LocalIndex apply(Model& model);
-  bool active(const Model& model) const;
+  LocalIndex apply(ParticleState& model);
+  bool active(const ParticleState& model) const;
 
  private:
   // G_p over the ball of radius eps (intact points of p's body).
   double releaseRate(const PointStore& points, LocalIndex p, double eps, double nu) const;
-  Settings settings_;
+  double erosion_radius_;
   CellList cells_;                     // over the candidates only (candidate_x_)
   std::vector<Vec3> candidate_x_;      // intact points of eroding bodies ...
   std::vector<LocalIndex> candidate_;  // ... and their point indices, in point order
@@ -44,4 +44,4 @@ class Eigenerosion {
   std::vector<std::uint8_t> erode_;
 };
 
-}  // namespace kessler::otm
+}  // namespace kessler

@@ -1,11 +1,11 @@
-#include "solver/otm/release.hpp"
+#include "solver/common/release.hpp"
 
 #include <algorithm>
 #include <limits>
 
-namespace kessler::otm {
+namespace kessler {
 
-LocalIndex DebrisRelease::apply(Model& model) {
+LocalIndex DebrisRelease::apply(ParticleState& model) {
   PointStore& points = model.points;
   const LocalIndex np = points.owned;
   releasing_.assign(static_cast<std::size_t>(np), 0);
@@ -20,7 +20,7 @@ LocalIndex DebrisRelease::apply(Model& model) {
   collect(points);
   for (LocalIndex p = 0; p < np; ++p) {
     if (!releasing_[p]) continue;
-    release(points, p, settings_.erosion_radius * points.spacing(p));
+    release(points, p, erosion_radius_ * points.spacing(p));
     points.carrier[p] = -1;
     points.stress[p].setZero();
     points.viscous_pressure[p] = 0.0;
@@ -37,7 +37,7 @@ void DebrisRelease::collect(const PointStore& points) {
   LocalIndex releasing = 0;
   for (LocalIndex p = 0; p < np; ++p) {
     if (!releasing_[p]) continue;
-    const double eps = settings_.erosion_radius * points.spacing(p);
+    const double eps = erosion_radius_ * points.spacing(p);
     lo = lo.cwiseMin(points.x[p]);
     hi = hi.cwiseMax(points.x[p]);
     reach = std::max(reach, eps);
@@ -115,4 +115,4 @@ void DebrisRelease::release(PointStore& points, LocalIndex p, double eps) const 
   if (lone && !debris_.empty()) forBall(debris_cells_, debris_, [&](LocalIndex q) { points.v[q] += dv; });
 }
 
-}  // namespace kessler::otm
+}  // namespace kessler

@@ -15,19 +15,19 @@
 // region released at once) takes the mean over the ball's earlier debris as well, and the
 // difference goes to those.
 #include "search/cell_list.hpp"
-#include "solver/otm/model.hpp"
-#include "solver/otm/settings.hpp"
+#include "solver/common/particle_state.hpp"
 
 #include <vector>
 
-namespace kessler::otm {
+namespace kessler {
 
 class DebrisRelease {
  public:
-  explicit DebrisRelease(const Settings& settings) : settings_(settings) {}
+  // erosion_radius: the radius of the ball B_eps as a multiple of the point spacing.
+  explicit DebrisRelease(double erosion_radius) : erosion_radius_(erosion_radius) {}
   // Releases every failed point whose stress is zero (it bears no compression), serially in point
   // order so that the result does not depend on the thread count. Returns the number released.
-  LocalIndex apply(Model& model);
+  LocalIndex apply(ParticleState& model);
 
  private:
   // The points of the releasing bodies near the releasing points: those still in their body, and
@@ -35,7 +35,7 @@ class DebrisRelease {
   void collect(const PointStore& points);
   void release(PointStore& points, LocalIndex p, double eps) const;
 
-  Settings settings_;
+  double erosion_radius_;
   std::vector<std::uint8_t> releasing_;      // per point: released in this call
   std::vector<std::uint8_t> body_releases_;  // per body: has a point released in this call
   CellList body_cells_, debris_cells_;
@@ -43,4 +43,4 @@ class DebrisRelease {
   std::vector<LocalIndex> body_points_, debris_;
 };
 
-}  // namespace kessler::otm
+}  // namespace kessler
