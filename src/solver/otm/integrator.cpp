@@ -5,7 +5,7 @@
 #include "solver/common/release.hpp"
 #include "solver/otm/debris.hpp"
 #include "solver/otm/integrator_assembly.hpp"
-#include "solver/otm/integrator_ordering.hpp"
+#include "solver/otm/morton_order.hpp"
 #include "solver/otm/volume_patch.hpp"
 
 #include <Eigen/Eigenvalues>

@@ -1,9 +1,9 @@
-// Morton ordering of points and nodes (solver/otm/integrator_ordering.hpp): a permutation within
+// Morton ordering of points and nodes (solver/otm/morton_order.hpp): a permutation within
 // each body's ranges, keys in increasing order, the mesh adjacency renumbered with the points, and
 // the transpose built in parallel identical for any thread count.
 #include "geometry/structured_mesh.hpp"
 #include "material/neo_hookean.hpp"
-#include "solver/otm/integrator_ordering.hpp"
+#include "solver/otm/morton_order.hpp"
 #include "solver/otm/setup.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "solver/otm/integrator_ordering.hpp"
+#include "solver/otm/morton_order.hpp"
 
 #include <algorithm>
 #include <numeric>
