@@ -111,7 +111,7 @@ HoleMeasurement measureHole(const ParticleState& model, const ImpactGeometry& ge
   const Vec3 e = geometry.shot_direction.normalized();
   const double mid = plate.rear_face - 0.5 * plate.thickness;
   const PlaneFrame frame = planeFrame(shotLineHit(geometry.impact_point, e, plate.normal, mid), plate.normal);
-  const auto intact = [&](LocalIndex p) { return model.points.eroded[p] == 0; };
+  const auto intact = [&](LocalIndex p) { return model.points.broken[p] == 0; };
 
   HoleMeasurement hole;
   hole.plate = plate_index;
@@ -159,7 +159,7 @@ RearWallDamage measureRearWall(const ParticleState& model, const FragmentSet& fr
       damage.debris_struck += model.points.mass[p] * mirror.images();
   const BodyInfo& body = bodyOf(model, plate);
   for (LocalIndex p = body.point_begin; p < body.point_end; ++p)
-    if (model.points.eroded[p] && plate.normal.dot(model.points.x[p]) > plate.rear_face)
+    if (model.points.broken[p] && plate.normal.dot(model.points.x[p]) > plate.rear_face)
       damage.eroded_mass_behind += model.points.mass[p] * mirror.images();
 
   // Fragments are sorted by mass: the first of this body is the wall itself.

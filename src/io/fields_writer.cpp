@@ -100,7 +100,7 @@ void writePoints(Hdf5Writer& h5, const std::string& file, const PointStore& poin
   out.scalar("plastic_strain", ownedPrefix(points.plastic_strain, points.owned, "points.plastic_strain"));
   out.scalar("temperature", ownedPrefix(points.temperature, points.owned, "points.temperature"));
   out.scalar("volume", ownedPrefix(points.volume, points.owned, "points.volume"));
-  out.scalar("eroded", ownedPrefix(points.eroded, points.owned, "points.eroded"));
+  out.scalar("eroded", ownedPrefix(points.broken, points.owned, "points.broken"));
   out.scalar("carrier", ownedPrefix(points.carrier, points.owned, "points.carrier"));
   out.scalar("body", ownedPrefix(points.body, points.owned, "points.body"));
   out.scalar("id", ownedPrefix(points.id, points.owned, "points.id"));
@@ -118,8 +118,7 @@ void writeNodes(Hdf5Writer& h5, const std::string& file, const NodeStore& nodes,
 
 // Replaces the grid of the same name (a step written again) or appends a new one.
 void record(std::vector<XdmfGrid>& grids, XdmfGrid grid) {
-  auto same =
-      std::find_if(grids.begin(), grids.end(), [&](const XdmfGrid& g) { return g.name == grid.name; });
+  auto same = std::find_if(grids.begin(), grids.end(), [&](const XdmfGrid& g) { return g.name == grid.name; });
   if (same != grids.end())
     *same = std::move(grid);
   else
@@ -132,18 +131,15 @@ FieldWriter::FieldWriter(std::filesystem::path dir) : dir_(std::move(dir)) {
   std::error_code error;
   std::filesystem::create_directories(dir_ / "fields", error);
   if (error)
-    throw Error(
-        fmt::format("cannot create the output folder '{}': {}", (dir_ / "fields").string(), error.message()));
+    throw Error(fmt::format("cannot create the output folder '{}': {}", (dir_ / "fields").string(), error.message()));
 }
 
 void FieldWriter::write(long step, double time, const NodeStore& nodes, const PointStore& points) {
   KESSLER_VERIFY(step >= 0, "field output: negative step {}", step);
   // XDMF paths are relative to the XDMF files in dir_, with '/' on every platform.
   const std::string file = fmt::format("fields/fields_{:08d}.h5", step);
-  XdmfGrid point_grid{
-      .name = fmt::format("points_{:08d}", step), .time = time, .geometry = {}, .attributes = {}};
-  XdmfGrid node_grid{
-      .name = fmt::format("nodes_{:08d}", step), .time = time, .geometry = {}, .attributes = {}};
+  XdmfGrid point_grid{.name = fmt::format("points_{:08d}", step), .time = time, .geometry = {}, .attributes = {}};
+  XdmfGrid node_grid{.name = fmt::format("nodes_{:08d}", step), .time = time, .geometry = {}, .attributes = {}};
 
   AtomicFile h5_file(dir_ / file);
   Hdf5Writer h5(h5_file.temporaryPath());

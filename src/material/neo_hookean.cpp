@@ -8,8 +8,7 @@ namespace kessler {
 
 void NeoHookeanParameters::check() const {
   if (!(density > 0.0)) throw InputError(fmt::format("density must be positive, got {}", density));
-  if (!(youngs_modulus > 0.0))
-    throw InputError(fmt::format("youngs_modulus must be positive, got {}", youngs_modulus));
+  if (!(youngs_modulus > 0.0)) throw InputError(fmt::format("youngs_modulus must be positive, got {}", youngs_modulus));
   if (!(poisson_ratio > -1.0 && poisson_ratio < 0.5))
     throw InputError(fmt::format("poisson_ratio must lie in (-1, 0.5), got {}", poisson_ratio));
   if (!(fracture_energy >= 0.0))
@@ -21,7 +20,9 @@ NeoHookean::NeoHookean(std::string name, const NeoHookeanParameters& parameters)
   p_.check();
 }
 
-double NeoHookean::referenceSoundSpeed() const { return std::sqrt((lambda_ + 2.0 * mu_) / p_.density); }
+double NeoHookean::referenceSoundSpeed() const {
+  return std::sqrt((lambda_ + 2.0 * mu_) / p_.density);
+}
 
 Mat3 NeoHookean::stress(const Mat3& F) const {
   const double J = F.determinant();
@@ -39,7 +40,7 @@ void NeoHookean::update(PointStore& points, LocalIndex begin, LocalIndex end, do
   const double rho0 = p_.density;
 #pragma omp parallel for schedule(static)
   for (LocalIndex p = begin; p < end; ++p) {
-    if (points.eroded[p]) {
+    if (points.broken[p]) {
       // Debris: no stress; its internal energy (the strain energy it had, and any heat of
       // erosion and capture) stays.
       points.stress[p].setZero();

@@ -74,9 +74,11 @@ struct PointStore {
   // The volume strain the averaging took away: over the steps, the sum of tr(dF - I) less its patch
   // average (volume averaging; docs/theory.md §4). Drives the stabilisation pressure.
   std::vector<double> volume_defect;
-  std::vector<Mat3> be;              // elastic left Cauchy-Green tensor (plasticity)
-  std::vector<std::uint8_t> eroded;  // 1: failed (eigenerosion or damage): no strength, see failed()
-  // Debris contact (solver/otm/debris.hpp), for eroded points: bit b set if body b cannot stop
+  std::vector<Mat3> be;  // elastic left Cauchy-Green tensor (plasticity)
+  // 1 once the point has broken (eigenerosion, damage or spall): no strength, no tension; failed(p)
+  // while it stays in its body, debris(p) once released (stored and written as "eroded").
+  std::vector<std::uint8_t> broken;
+  // Debris contact (solver/otm/debris.hpp), for broken points: bit b set if body b cannot stop
   // the point (its own body and the bodies that body touched when it was released; 0 before),
   // and the body whose nodes carry it: its own while it is failed but not yet released, none once
   // it is debris, -1 if it has struck no body yet, -2 - b after it last struck body b.
@@ -112,7 +114,7 @@ struct PointStore {
     visit("viscosity_limiter", s.viscosity_limiter, 0.0);
     visit("volume_defect", s.volume_defect, 0.0);
     visit("be", s.be, identity);
-    visit("eroded", s.eroded, std::uint8_t{0});
+    visit("eroded", s.broken, std::uint8_t{0});
     visit("passes_through", s.passes_through, std::int64_t{0});
     visit("carrier", s.carrier, std::int32_t{-1});
     visit("lambda", s.lambda, zero);
@@ -127,11 +129,11 @@ struct PointStore {
   // The states of a point (docs/theory.md §8): intact; failed, still part of its body, bearing
   // compression only (no strength, no tension: fractured material under pressure); debris,
   // released once it bears no compression: ballistic, pushed back by the bodies it strikes.
-  bool failed(LocalIndex p) const { return eroded[p] && carrier[p] == body[p]; }
-  bool debris(LocalIndex p) const { return eroded[p] && carrier[p] != body[p]; }
+  bool failed(LocalIndex p) const { return broken[p] && carrier[p] == body[p]; }
+  bool debris(LocalIndex p) const { return broken[p] && carrier[p] != body[p]; }
   // An intact point fails: it stays in its body until the integrator releases it.
   void fail(LocalIndex p) {
-    eroded[p] = 1;
+    broken[p] = 1;
     carrier[p] = body[p];
   }
   // Debris point p strikes body b (solver/otm/debris.hpp); the last body it struck, -1 if none.

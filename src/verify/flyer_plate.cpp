@@ -123,8 +123,8 @@ FlyerPlateResult runFlyerPlate() {
   // The shocked target only: the flyer's free rear face releases into tension after the shock
   // has crossed it (docs/validation.md), which is not what this problem checks.
   const BodyInfo& shocked = model.bodies[static_cast<std::size_t>(target)];
-  r.eroded = std::count(model.points.eroded.begin() + shocked.point_begin,
-                        model.points.eroded.begin() + shocked.point_end, std::uint8_t{1});
+  r.eroded = std::count(model.points.broken.begin() + shocked.point_begin,
+                        model.points.broken.begin() + shocked.point_end, std::uint8_t{1});
   return r;
 }
 

@@ -34,7 +34,7 @@ GriffithResult runGriffith(const GriffithCase& g) {
   std::vector<std::uint8_t> initial(model.points.owned, 0);
   for (LocalIndex p = 0; p < model.points.owned; ++p) {
     const Vec3& x = model.points.x[p];
-    if (x[1] > 0 && x[1] < h && std::abs(x[0]) < a) initial[p] = model.points.eroded[p] = 1;
+    if (x[1] > 0 && x[1] < h && std::abs(x[0]) < a) initial[p] = model.points.broken[p] = 1;
   }
   const double sigma_ref =
       std::sqrt(E * gc / (std::numbers::pi * a)) / std::sqrt(1.0 / std::cos(std::numbers::pi * a / (2 * half_width)));
@@ -56,7 +56,7 @@ GriffithResult runGriffith(const GriffithCase& g) {
   otm::Integrator integrator(model, settings);
   integrator.initialise();
   const LocalIndex initial_eroded =
-      static_cast<LocalIndex>(std::count(model.points.eroded.begin(), model.points.eroded.end(), std::uint8_t{1}));
+      static_cast<LocalIndex>(std::count(model.points.broken.begin(), model.points.broken.end(), std::uint8_t{1}));
   GriffithResult r;
   r.reference = sigma_ref;
   r.fail_time_reference = t_fail;
@@ -69,18 +69,18 @@ GriffithResult runGriffith(const GriffithCase& g) {
     }
     integrator.step();
     const LocalIndex eroded =
-        static_cast<LocalIndex>(std::count(model.points.eroded.begin(), model.points.eroded.end(), std::uint8_t{1}));
+        static_cast<LocalIndex>(std::count(model.points.broken.begin(), model.points.broken.end(), std::uint8_t{1}));
     if (eroded > initial_eroded) {  // the crack grew: the remote stress now
       double mass = 0.0, sum = 0.0;
       for (LocalIndex p = 0; p < model.points.owned; ++p) {
-        if (model.points.eroded[p] || std::abs(model.points.x[p][1]) < 0.5 * half_height) continue;
+        if (model.points.broken[p] || std::abs(model.points.x[p][1]) < 0.5 * half_height) continue;
         mass += model.points.mass[p];
         sum += model.points.mass[p] * model.points.stress[p](1, 1);
       }
       r.failure_stress = sum / mass;
       r.failure_time = integrator.time();
       for (LocalIndex p = 0; p < model.points.owned; ++p)
-        if (model.points.eroded[p] && !initial[p]) r.first_eroded = model.points.x[p];
+        if (model.points.broken[p] && !initial[p]) r.first_eroded = model.points.x[p];
       break;
     }
   }

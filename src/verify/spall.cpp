@@ -91,7 +91,7 @@ SpallResult runSpall(double speed, double cell) {
     integrator.step();
     for (LocalIndex p = body.point_begin; p < body.point_end; ++p) {
       const auto id = static_cast<std::size_t>(model.points.id[p]);
-      if (model.points.eroded[p] && failed_at[id] < 0.0) failed_at[id] = integrator.time();
+      if (model.points.broken[p] && failed_at[id] < 0.0) failed_at[id] = integrator.time();
     }
   }
 
@@ -118,7 +118,7 @@ SpallResult runSpall(double speed, double cell) {
   for (int b = 0; b < static_cast<int>(model.bodies.size()); ++b)
     if (b != target)
       for (LocalIndex p = model.bodies[b].point_begin; p < model.bodies[b].point_end; ++p)
-        r.flyer_failed += model.points.eroded[p] != 0;
+        r.flyer_failed += model.points.broken[p] != 0;
   r.points = model.points.owned;
   r.steps = integrator.steps();
   return r;

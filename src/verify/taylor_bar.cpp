@@ -65,7 +65,7 @@ TaylorBarResult runTaylorBar(double mesh_size, double cfl, bool volume_averaging
       r.point_footprint_radius = std::max(r.point_footprint_radius, std::hypot(points.x[q][0], points.x[q][1]));
   double limit = std::numeric_limits<double>::infinity();
   for (LocalIndex q = 0; q < points.owned; ++q) {
-    if (points.eroded[q]) continue;
+    if (points.broken[q]) continue;
     const double ratio = otm::stepLength(model, q) / points.sound_speed[q];
     if (ratio >= limit) continue;
     limit = ratio;

@@ -34,7 +34,7 @@ LocalIndex Eigenerosion::apply(ParticleState& model) {
   candidate_x_.clear();
   candidate_.clear();
   for (LocalIndex p = 0; p < np; ++p) {
-    if (points.eroded[p] || gc[points.body[p]] <= 0.0) continue;
+    if (points.broken[p] || gc[points.body[p]] <= 0.0) continue;
     candidate_x_.push_back(points.x[p]);
     candidate_.push_back(p);
   }

@@ -260,7 +260,7 @@ void Integrator::balanceEnergy() {
   const std::vector<double>& stored = patch_.work();  // apply() sizes it every step
 #pragma omp parallel for schedule(static)
   for (LocalIndex p = 0; p < points.owned; ++p)
-    transfer_heat_[p] = points.eroded[p] ? 0.0 : force_work_[p] - stored[p] - points.mass[p] * points.energy[p];
+    transfer_heat_[p] = points.broken[p] ? 0.0 : force_work_[p] - stored[p] - points.mass[p] * points.energy[p];
   heatPoints(transfer_heat_);
 }
 

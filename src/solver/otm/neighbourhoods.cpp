@@ -22,7 +22,7 @@ void Neighbourhoods::buildOccluders(const Model& model, double reach) {
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   double spacing_sum = 0.0;
   for (LocalIndex p = 0; p < points.owned; ++p) {
-    if (points.eroded[p]) continue;
+    if (points.broken[p]) continue;
     lo = lo.cwiseMin(points.x[p]);
     hi = hi.cwiseMax(points.x[p]);
     spacing_sum += points.spacing(p);
@@ -33,7 +33,7 @@ void Neighbourhoods::buildOccluders(const Model& model, double reach) {
   // Debris that has flown away from every intact point hides nothing.
   for (LocalIndex q = 0; q < points.owned; ++q) {
     const Vec3& x = points.x[q];
-    if (!points.eroded[q] || (x.array() < lo.array()).any() || (x.array() > hi.array()).any()) continue;
+    if (!points.broken[q] || (x.array() < lo.array()).any() || (x.array() > hi.array()).any()) continue;
     eroded_x_.push_back(x);
     eroded_body_.push_back(points.body[q]);
   }
@@ -289,7 +289,7 @@ void Neighbourhoods::update(Model& model) {
 #pragma omp parallel for schedule(static)
   for (LocalIndex p = 0; p < np; ++p) spacing_[p] = points.spacing(p);
   const Eigen::Vector2d sum = deterministicSum(np, Eigen::Vector2d(Eigen::Vector2d::Zero()), [&](LocalIndex p) {
-    return points.eroded[p] ? Eigen::Vector2d(0.0, 0.0) : Eigen::Vector2d(spacing_[p], 1.0);
+    return points.broken[p] ? Eigen::Vector2d(0.0, 0.0) : Eigen::Vector2d(spacing_[p], 1.0);
   });
   const double spacing_sum = sum[0];
   const auto intact = static_cast<LocalIndex>(sum[1]);

@@ -16,7 +16,7 @@ double stabilisationPressure(const PointStore& points, LocalIndex p, double alph
   const double c = points.sound_speed[p];
   const double pressure = -alpha * points.density(p) * c * c * points.volume_defect[p];
   // Failed material bears compression only (docs/theory.md §8): its stabilisation too.
-  if (points.eroded[p]) return std::max(pressure, 0.0);
+  if (points.broken[p]) return std::max(pressure, 0.0);
   if (!(tensile_limit < std::numeric_limits<double>::infinity())) return pressure;
   const double own = -points.stress[p].trace() / 3.0;  // the point's pressure, its viscosity included
   return std::max(pressure, -(own + tensile_limit));
@@ -111,7 +111,7 @@ double VolumePatch::apply(const Connectivity& conn, LocalIndex owned_nodes, bool
     defect_step_[p] = defect_step;
     // Intact points only: a failed point's compression-only stabilisation keeps the debris at a
     // contact from overcompressing (docs/theory.md §4), and relaxed it let them heat and overshoot.
-    if (alpha > 0.0 && relaxation > 0.0 && !points.eroded[p]) work_[p] = -relax(points, p, alpha, dt / relaxation);
+    if (alpha > 0.0 && relaxation > 0.0 && !points.broken[p]) work_[p] = -relax(points, p, alpha, dt / relaxation);
     if (alpha > 0.0) work_[p] += -0.5 * pressure(points, p, alpha) * points.volume[p] * defect_step;
     points.volume_defect[p] += defect_step;
     signal2_[p] = points.sound_speed[p] * points.sound_speed[p];
@@ -135,7 +135,7 @@ double VolumePatch::closeStep(const PointStore& points, double alpha) {
     const double d = points.volume_defect[p];
     // Not for a point its tensile limit holds: its stored energy, -S V d / 2, follows its own
     // pressure there, not c^2.
-    if (rebook_ && signal2_[p] > 0.0 && !points.eroded[p] && S == stabilisationPressure(points, p, alpha)) {
+    if (rebook_ && signal2_[p] > 0.0 && !points.broken[p] && S == stabilisationPressure(points, p, alpha)) {
       const double c = points.sound_speed[p];
       second += 0.5 * alpha * points.mass[p] * d * d * (c * c - signal2_[p]);
     }

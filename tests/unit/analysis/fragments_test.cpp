@@ -85,7 +85,7 @@ TEST(Fragments, ChainBrokenByAnErodedPoint) {
   for (int i = 0; i < 5; ++i) chain.emplace_back(i * mm, 0, 0);
   const int body = addCloud(model, "chain", chain, 1e-9);
   for (LocalIndex i = 0; i < 4; ++i) model.adjacency.push_back({i, i + 1});
-  model.points.eroded[2] = 1;
+  model.points.broken[2] = 1;
   const FragmentSet set = findFragments(model, referenceLinkLengths(model), {});
   ASSERT_EQ(set.fragments.size(), 2u);
   const double m = rho * 1e-9;
@@ -142,7 +142,7 @@ TEST(Fragments, SameResultForAnyThreadCount) {
   otm::Model model;
   addBlock(model, "plate", {Vec3(0, 0, 0), Vec3(10 * mm, 10 * mm, 2 * mm)}, {20, 20, 4});
   std::mt19937 random(7);
-  for (LocalIndex p = 0; p < model.points.size(); ++p) model.points.eroded[p] = random() % 3 == 0;
+  for (LocalIndex p = 0; p < model.points.size(); ++p) model.points.broken[p] = random() % 3 == 0;
   const std::vector<double> lengths = referenceLinkLengths(model);
   const int threads = omp_get_max_threads();
   omp_set_num_threads(1);

@@ -279,7 +279,7 @@ TEST(RearWall, PerforationSpallAndNone) {
     const BodyInfo& debris = m.model.bodies[cloud];
     for (LocalIndex p = debris.point_begin; p < debris.point_end; ++p) {
       const LocalIndex k = p - debris.point_begin;
-      points.eroded[p] = 1;
+      points.broken[p] = 1;
       points.carrier[p] = -1;
       if (k < 3) points.strike(p, m.plate);
       if (k == 3) points.strike(p, cloud + 1);

@@ -37,7 +37,7 @@ int erodeWhere(otm::Model& model, int body, const Pred& pred) {
   const BodyInfo& info = model.bodies[body];
   for (LocalIndex p = info.point_begin; p < info.point_end; ++p) {
     if (pred(model.points.x[p])) {
-      model.points.eroded[p] = 1;
+      model.points.broken[p] = 1;
       ++count;
     }
   }

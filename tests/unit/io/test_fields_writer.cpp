@@ -41,7 +41,7 @@ Stores makeStores(double shift) {
     s.points.volume[p] = 0.5;
     s.points.plastic_strain[p] = 0.125 * d;
     s.points.temperature[p] = 293.0 + d;
-    s.points.eroded[p] = p == 4 ? 1 : 0;
+    s.points.broken[p] = p == 4 ? 1 : 0;
   }
   // Uniaxial, pure shear, hydrostatic, general, zero.
   s.points.stress[0] = Vec3(3e8, 0, 0).asDiagonal();
@@ -127,8 +127,7 @@ std::string slurp(const fs::path& file) {
 
 std::vector<double> flat(const std::vector<Vec3>& vectors, std::size_t n) {
   std::vector<double> values;
-  for (std::size_t i = 0; i < n; ++i)
-    values.insert(values.end(), {vectors[i].x(), vectors[i].y(), vectors[i].z()});
+  for (std::size_t i = 0; i < n; ++i) values.insert(values.end(), {vectors[i].x(), vectors[i].y(), vectors[i].z()});
   return values;
 }
 
@@ -185,20 +184,16 @@ TEST_F(FieldWriterTest, WritesOwnedValuesExactly) {
   EXPECT_EQ(read<double>(file, "/points/temperature", H5T_NATIVE_DOUBLE), temperature);
   EXPECT_EQ(read<double>(file, "/points/volume", H5T_NATIVE_DOUBLE), std::vector<double>(5, 0.5));
   EXPECT_EQ(read<double>(file, "/points/density", H5T_NATIVE_DOUBLE), (std::vector<double>{4, 6, 8, 10, 12}));
-  EXPECT_EQ(read<std::uint8_t>(file, "/points/eroded", H5T_NATIVE_UINT8),
-            (std::vector<std::uint8_t>{0, 0, 0, 0, 1}));
-  EXPECT_EQ(read<std::int32_t>(file, "/points/body", H5T_NATIVE_INT32),
-            (std::vector<std::int32_t>{0, 0, 0, 1, 1}));
+  EXPECT_EQ(read<std::uint8_t>(file, "/points/eroded", H5T_NATIVE_UINT8), (std::vector<std::uint8_t>{0, 0, 0, 0, 1}));
+  EXPECT_EQ(read<std::int32_t>(file, "/points/body", H5T_NATIVE_INT32), (std::vector<std::int32_t>{0, 0, 0, 1, 1}));
   EXPECT_EQ(read<std::int64_t>(file, "/points/id", H5T_NATIVE_INT64),
             (std::vector<std::int64_t>{1000, 1001, 1002, 1003, 1004}));
 
   EXPECT_EQ(read<double>(file, "/nodes/position", H5T_NATIVE_DOUBLE), flat(s.nodes.x, 4));
   EXPECT_EQ(read<double>(file, "/nodes/velocity", H5T_NATIVE_DOUBLE), flat(s.nodes.v, 4));
   EXPECT_EQ(read<double>(file, "/nodes/mass", H5T_NATIVE_DOUBLE), (std::vector<double>{0, 1.5, 3, 4.5}));
-  EXPECT_EQ(read<std::int32_t>(file, "/nodes/body", H5T_NATIVE_INT32),
-            (std::vector<std::int32_t>{0, 1, 0, 1}));
-  EXPECT_EQ(read<std::int64_t>(file, "/nodes/id", H5T_NATIVE_INT64),
-            (std::vector<std::int64_t>{7, 8, 9, 10}));
+  EXPECT_EQ(read<std::int32_t>(file, "/nodes/body", H5T_NATIVE_INT32), (std::vector<std::int32_t>{0, 1, 0, 1}));
+  EXPECT_EQ(read<std::int64_t>(file, "/nodes/id", H5T_NATIVE_INT64), (std::vector<std::int64_t>{7, 8, 9, 10}));
 
   // The first output holds the first state, not the second.
   const fs::path first = dir_ / "run" / "fields" / "fields_00000000.h5";
@@ -225,8 +220,8 @@ TEST_F(FieldWriterTest, PressureAndVonMisesFromStress) {
   // General tensor against the textbook formula in components.
   const double xx = 1e8, yy = -5e7, zz = 2.5e8, xy = 2e7, yz = 4e7, zx = -3e7;
   EXPECT_DOUBLE_EQ(pressure[3], -(xx + yy + zz) / 3.0);
-  const double textbook = std::sqrt(0.5 * ((xx - yy) * (xx - yy) + (yy - zz) * (yy - zz) +
-                                           (zz - xx) * (zz - xx) + 6.0 * (xy * xy + yz * yz + zx * zx)));
+  const double textbook = std::sqrt(0.5 * ((xx - yy) * (xx - yy) + (yy - zz) * (yy - zz) + (zz - xx) * (zz - xx) +
+                                           6.0 * (xy * xy + yz * yz + zx * zx)));
   EXPECT_DOUBLE_EQ(von_mises[3], textbook);
   EXPECT_EQ(pressure[4], 0.0);
   EXPECT_EQ(von_mises[4], 0.0);
@@ -251,9 +246,8 @@ void checkXdmf(const fs::path& xdmf, const std::vector<double>& times, hsize_t c
     EXPECT_EQ(std::stoull((*m)[1]), count);
   EXPECT_EQ(topologies, static_cast<int>(times.size()));
 
-  const std::regex item_pattern(
-      R"re(<DataItem Dimensions="([^"]*)" NumberType="([^"]*)" Precision="(\d+)" )re"
-      R"re(Format="HDF">([^:<]*):([^<]*)</DataItem>)re");
+  const std::regex item_pattern(R"re(<DataItem Dimensions="([^"]*)" NumberType="([^"]*)" Precision="(\d+)" )re"
+                                R"re(Format="HDF">([^:<]*):([^<]*)</DataItem>)re");
   int items = 0;
   for (std::sregex_iterator m(text.begin(), text.end(), item_pattern), end; m != end; ++m, ++items) {
     const std::string file = (*m)[4], name = (*m)[5];
@@ -286,11 +280,10 @@ TEST_F(FieldWriterTest, XdmfListsEveryOutputWithMatchingDatasets) {
   // 2 grids x (geometry + 11 attributes) for points, 2 x (geometry + 4) for nodes.
   const std::string points = slurp(dir_ / "run" / "points.xdmf");
   std::size_t items = 0;
-  for (auto at = points.find("<DataItem "); at != std::string::npos; at = points.find("<DataItem ", at + 1))
-    ++items;
+  for (auto at = points.find("<DataItem "); at != std::string::npos; at = points.find("<DataItem ", at + 1)) ++items;
   EXPECT_EQ(items, 24u);
-  for (const char* name : {"velocity", "density", "pressure", "von_mises", "plastic_strain", "temperature",
-                           "eroded", "carrier", "body", "id", "volume"})
+  for (const char* name : {"velocity", "density", "pressure", "von_mises", "plastic_strain", "temperature", "eroded",
+                           "carrier", "body", "id", "volume"})
     EXPECT_NE(points.find(std::string("<Attribute Name=\"") + name + "\""), std::string::npos) << name;
 }
 

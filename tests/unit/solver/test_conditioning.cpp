@@ -96,7 +96,7 @@ TEST(Conditioning, AnIntactPointOutsideTheHullOfEveryNeighbourhoodIsTornAndRelea
   EXPECT_DOUBLE_EQ(neighbourhoods.tornMass(), points.mass[p]);
   for (LocalIndex q = 0; q < points.owned; ++q)
     if (q != p) {
-      EXPECT_FALSE(points.eroded[q]) << "point " << q;
+      EXPECT_FALSE(points.broken[q]) << "point " << q;
     }
 }
 

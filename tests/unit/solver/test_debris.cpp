@@ -38,7 +38,7 @@ Model debrisOntoWall() {
   Model model;
   addBody(model, "debris", al, box(Vec3(-1e-3, -1e-3, 2e-3), Vec3(1e-3, 1e-3, 3e-3), {2, 2, 1}), Vec3(0, 0, -speed));
   addBody(model, "wall", al, box(Vec3(-4e-3, -4e-3, -2e-3), Vec3(4e-3, 4e-3, 0), {8, 8, 2}), Vec3::Zero());
-  for (LocalIndex p = 0; p < model.points.owned; ++p) model.points.eroded[p] = model.points.body[p] == debris_body;
+  for (LocalIndex p = 0; p < model.points.owned; ++p) model.points.broken[p] = model.points.body[p] == debris_body;
   return model;
 }
 

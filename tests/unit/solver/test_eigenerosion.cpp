@@ -43,7 +43,7 @@ Model hotSpotModel(const Settings& settings, double nu) {
   for (LocalIndex q = 0; q < points.size(); ++q) {
     const double r2 = (points.x[q] - hot).squaredNorm() / (2e-3 * 2e-3);
     points.strain_energy[q] = 1.5 * threshold * std::exp(-0.5 * r2) * spread(random);
-    points.eroded[q] = random() % 10 == 0;  // some already eroded: they take no part
+    points.broken[q] = random() % 10 == 0;  // some already eroded: they take no part
   }
   return model;
 }
@@ -56,28 +56,28 @@ TEST(Eigenerosion, ErodesExactlyThePointsOfTheDefinition) {
   std::vector<std::uint8_t> expected(points.size(), 0);
   for (LocalIndex a = 0; a < points.size(); ++a) {
     const double gc = model.materials[model.bodies[points.body[a]].material]->fractureEnergy();
-    if (points.eroded[a] || gc <= 0.0) continue;
+    if (points.broken[a] || gc <= 0.0) continue;
     const double eps = settings.erosion_radius * points.spacing(a);
     double mass = 0.0, energy = 0.0;
     for (LocalIndex q = 0; q < points.size(); ++q) {
-      if (points.eroded[q] || points.body[q] != points.body[a] || (points.x[q] - points.x[a]).norm() > eps) continue;
+      if (points.broken[q] || points.body[q] != points.body[a] || (points.x[q] - points.x[a]).norm() > eps) continue;
       mass += points.mass[q];
       energy += points.mass[q] * points.strain_energy[q];
     }
     expected[a] = erosionCalibration(eps, nu) * energy / mass >= gc;
   }
-  const std::vector<std::uint8_t> before = points.eroded;
+  const std::vector<std::uint8_t> before = points.broken;
   Eigenerosion erosion(settings.erosion_radius);
   const LocalIndex count = erosion.apply(model);
 
   LocalIndex newly = 0, mismatches = 0;
   for (LocalIndex a = 0; a < points.size(); ++a) {
     if (before[a]) {
-      EXPECT_TRUE(points.eroded[a]) << "point " << a << " was eroded and must stay so";
+      EXPECT_TRUE(points.broken[a]) << "point " << a << " was eroded and must stay so";
       continue;
     }
     newly += expected[a];
-    mismatches += points.eroded[a] != expected[a];
+    mismatches += points.broken[a] != expected[a];
   }
   EXPECT_EQ(mismatches, 0);
   EXPECT_EQ(count, newly);
@@ -112,7 +112,7 @@ TEST(Eigenerosion, DebrisTakesTheBallVelocityAndMomentumAndEnergyAreExact) {
   };
   const Vec3 before_a = momentum(0), before_b = momentum(1);
   const double energy_before = energy();
-  const std::vector<std::uint8_t> eroded_before = points.eroded;
+  const std::vector<std::uint8_t> eroded_before = points.broken;
   const std::vector<Vec3> v_before = points.v;
 
   // The points fail free of stress (the model is at rest), so they are released at once.
@@ -126,7 +126,7 @@ TEST(Eigenerosion, DebrisTakesTheBallVelocityAndMomentumAndEnergyAreExact) {
   EXPECT_NEAR(energy(), energy_before, 1e-12 * energy_before);
 
   LocalIndex first = 0;
-  while (!points.eroded[first] || eroded_before[first]) ++first;
+  while (!points.broken[first] || eroded_before[first]) ++first;
   const double eps = settings.erosion_radius * points.spacing(first);
   double mass = 0.0;
   Vec3 sum = Vec3::Zero();
@@ -156,7 +156,7 @@ TEST(Eigenerosion, TheLastOfAnErodingRegionTakesTheMeanOfItsDebris) {
     points.v[q] = v0;
     if (points.body[q] != 0) continue;
     points.strain_energy[q] = 1e12;  // body a erodes entirely
-    if (!points.eroded[q]) points.v[q] += Vec3(noise(random), noise(random), noise(random));
+    if (!points.broken[q]) points.v[q] += Vec3(noise(random), noise(random), noise(random));
   }
   auto total = [&] {
     Vec3 momentum = Vec3::Zero();
@@ -178,7 +178,7 @@ TEST(Eigenerosion, TheLastOfAnErodingRegionTakesTheMeanOfItsDebris) {
     return std::sqrt(sum / static_cast<double>(n));
   };
   std::vector<std::uint8_t> intact(points.size());
-  for (LocalIndex q = 0; q < points.size(); ++q) intact[q] = !points.eroded[q];
+  for (LocalIndex q = 0; q < points.size(); ++q) intact[q] = !points.broken[q];
   const auto [momentum_before, energy_before] = total();
   const double scatter_before = scatter(intact);
 

@@ -99,7 +99,7 @@ TEST(DebrisRelease, ReleasesOnlyTheFailedPointsThatBearNothing) {
   }
   // The wall's points are untouched.
   for (LocalIndex p = model.bodies[wall_body].point_begin; p < model.bodies[wall_body].point_end; ++p)
-    EXPECT_FALSE(points.eroded[p]);
+    EXPECT_FALSE(points.broken[p]);
 }
 
 }  // namespace

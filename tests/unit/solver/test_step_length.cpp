@@ -51,7 +51,7 @@ TEST(StepLength, IsTheSmallestStretchUntilAPointIsFlattenedBelowHalfItsSpacing) 
   points.F[p] = Vec3(1.0 / std::sqrt(0.2), 1.0 / std::sqrt(0.2), 0.2).asDiagonal();
   EXPECT_DOUBLE_EQ(stepLength(model, p), points.spacing(p));
   // Failed: its spacing, whatever F says.
-  points.eroded[p] = 1;
+  points.broken[p] = 1;
   EXPECT_DOUBLE_EQ(stepLength(model, p), points.spacing(p));
 }
 

@@ -27,7 +27,7 @@ long connectionsAcross(const Model& model) {
   const Connectivity& conn = model.connectivity;
   long across = 0;
   for (LocalIndex p = 0; p < points.owned; ++p) {
-    if (points.eroded[p]) continue;
+    if (points.broken[p]) continue;
     for (Index k = conn.offset[p]; k < conn.offset[p + 1]; ++k) {
       if (conn.N[k] == 0.0 && conn.dN[k].isZero(0.0)) continue;
       const double y = model.nodes.x[conn.node[k]][1];
@@ -46,7 +46,7 @@ TEST(Visibility, AnErodedBandCutsTheNeighbourhoods) {
 
   Model cracked = plate();
   for (LocalIndex p = 0; p < cracked.points.owned; ++p)
-    if (cracked.points.x[p][1] > 0.0 && cracked.points.x[p][1] < h) cracked.points.eroded[p] = 1;
+    if (cracked.points.x[p][1] > 0.0 && cracked.points.x[p][1] < h) cracked.points.broken[p] = 1;
   Neighbourhoods(settings).update(cracked);
   EXPECT_EQ(connectionsAcross(cracked), 0);
   Model off = cracked;
@@ -54,7 +54,7 @@ TEST(Visibility, AnErodedBandCutsTheNeighbourhoods) {
   EXPECT_GT(connectionsAcross(off), 100);
   const Connectivity& conn = cracked.connectivity;
   for (LocalIndex p = 0; p < cracked.points.owned; ++p) {
-    if (cracked.points.eroded[p]) continue;
+    if (cracked.points.broken[p]) continue;
     double sum = 0.0;
     for (Index k = conn.offset[p]; k < conn.offset[p + 1]; ++k) sum += conn.N[k];
     EXPECT_NEAR(sum, 1.0, 1e-9) << "point " << p;
