@@ -2,6 +2,7 @@
 // The energy and momentum budget of a run, as every method reports it (history.csv,
 // summary.json, the health checks).
 #include "core/types.hpp"
+#include "particles/store.hpp"
 
 namespace kessler {
 
@@ -15,5 +16,9 @@ struct Energies {
   Vec3 momentum = Vec3::Zero();
   double total() const { return kinetic + internal + stabilisation; }
 };
+
+// The budget of the owned points, summed in a fixed order (the same bits for any thread count),
+// with `stored` as the stabilisation energy.
+Energies pointEnergies(const PointStore& points, double stored);
 
 }  // namespace kessler

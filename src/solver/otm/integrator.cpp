@@ -1,7 +1,6 @@
 #include "solver/otm/integrator.hpp"
 
 #include "core/error.hpp"
-#include "core/reduce.hpp"
 #include "solver/common/release.hpp"
 #include "solver/otm/debris.hpp"
 #include "solver/otm/integrator_assembly.hpp"
@@ -363,15 +362,7 @@ double Integrator::stableStep() const {
 }
 
 Energies Integrator::energies() const {
-  const PointStore& points = model_.points;
-  Energies e;
-  e.kinetic = deterministicSum(points.owned, 0.0,
-                               [&](LocalIndex p) { return 0.5 * points.mass[p] * points.v[p].squaredNorm(); });
-  e.internal = deterministicSum(points.owned, 0.0, [&](LocalIndex p) { return points.mass[p] * points.energy[p]; });
-  e.stabilisation = stabilisation_energy_ + contact_.storedEnergy();
-  e.momentum = deterministicSum(points.owned, Vec3(Vec3::Zero()),
-                                [&](LocalIndex p) -> Vec3 { return points.mass[p] * points.v[p]; });
-  return e;
+  return pointEnergies(model_.points, stabilisation_energy_ + contact_.storedEnergy());
 }
 
 void Integrator::failAtPoint(LocalIndex p, const std::string& what) const {
