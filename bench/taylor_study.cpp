@@ -1,7 +1,7 @@
 // Resolution study of the copper Taylor bar (docs/validation.md): runs verify::runTaylorBar at
 // each mesh size given in mm on the command line and prints points, steps, wall time, final length
 // and footprint radius. Options first: `--cfl X` changes the factor on the time step (default
-// 0.3), `--no-volume-averaging` turns solver.volume_averaging off. Not a test: the sizes near the
+// 0.3), `--no-volume-averaging` turns solver.otm.volume_averaging off. Not a test: the sizes near the
 // 0.8 mm benchmark take minutes.
 #include "core/error.hpp"
 #include "verify/impact_problems.hpp"

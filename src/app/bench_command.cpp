@@ -44,7 +44,7 @@ struct BenchOptions {
   int threads = 0;
   int steps = 0;
   std::string json;
-  std::vector<std::string> overrides;  // deck settings changed from the problem's ("solver.lme_gamma=4")
+  std::vector<std::string> overrides;  // deck settings changed from the problem's ("solver.otm.lme_gamma=4")
   bool single = false;                 // run one problem in this process (the child of a bench run)
 };
 
@@ -287,7 +287,7 @@ void addBenchCommand(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   bench->add_option("--json", options->json, "Write the results as JSON to this file");
   bench->add_option("--set", options->overrides,
-                    "Change a setting of the problem's deck, as for run (e.g. --set solver.lme_gamma=4)");
+                    "Change a setting of the problem's deck, as for run (e.g. --set solver.otm.lme_gamma=4)");
   bench->add_flag("--single", options->single, "Run one problem in this process (used by bench itself)")->group("");
   bench->callback([options] { runBench(*options); });
 }

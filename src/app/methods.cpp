@@ -20,7 +20,8 @@ std::vector<otm::BodySetup> bodySetups(const io::RunConfig& config) {
 }  // namespace
 
 std::unique_ptr<Method> buildMethod(const io::RunConfig& config) {
-  return std::make_unique<otm::OtmMethod>(otm::buildModel(bodySetups(config), config.symmetry_axes), config.solver);
+  return std::make_unique<otm::OtmMethod>(otm::buildModel(bodySetups(config), config.symmetry_axes),
+                                          otm::settingsFor(config.solver, config.otm));
 }
 
 std::unique_ptr<Method> restoreMethod(const io::RunConfig& config, const std::filesystem::path& file,
@@ -29,7 +30,7 @@ std::unique_ptr<Method> restoreMethod(const io::RunConfig& config, const std::fi
       io::readCheckpoint(file, deckMaterials(config), [&](ParticleState&& state) -> std::unique_ptr<Method> {
         otm::Model model;
         static_cast<ParticleState&>(model) = std::move(state);
-        return std::make_unique<otm::OtmMethod>(std::move(model), config.solver);
+        return std::make_unique<otm::OtmMethod>(std::move(model), otm::settingsFor(config.solver, config.otm));
       });
   loop = std::move(restored.loop);
   return std::move(restored.method);

@@ -5,7 +5,7 @@
 #include "geometry/mesh.hpp"
 #include "material/impact_material.hpp"
 #include "material/neo_hookean.hpp"
-#include "solver/otm/settings.hpp"
+#include "solver/common/settings.hpp"
 
 #include <string>
 #include <vector>
@@ -17,21 +17,21 @@ struct MaterialConfig {
   // "neo-hookean": elastic, `neo_hookean` holds its parameters. "impact": equation of state,
   // strength, heat, viscosity and damage, `impact` holds them (from the library and/or the deck).
   std::string model = "neo-hookean";
-  std::string library;               // library entry the material started from, if any
+  std::string library;  // library entry the material started from, if any
   NeoHookeanParameters neo_hookean;
   ImpactMaterialParameters impact;
 };
 
 struct BodyConfig {
   std::string name;
-  int material = 0;                      // index into RunConfig::materials
-  geometry::MeshRequest mesh;            // shape, mesh size, refinement, symmetry planes
-  Vec3 velocity = Vec3::Zero();          // initial velocity, m/s
+  int material = 0;              // index into RunConfig::materials
+  geometry::MeshRequest mesh;    // shape, mesh size, refinement, symmetry planes
+  Vec3 velocity = Vec3::Zero();  // initial velocity, m/s
   geometry::FixedNodes fixed = geometry::FixedNodes::none;
 };
 
 struct OutputConfig {
-  double every = 0.0;        // simulated time between field outputs, s (0: only first and last)
+  double every = 0.0;  // simulated time between field outputs, s (0: only first and last)
   std::string dir = "out";
 };
 
@@ -46,9 +46,9 @@ struct CheckpointConfig {
 // plates, and the options of the measurements. Without a deck `analysis:` block every field is
 // inferred from the bodies (parseDeck fills them in, so the resolved deck shows what was used).
 struct AnalysisConfig {
-  bool enabled = true;           // false: no analysis (also when the deck has no moving body)
-  std::vector<int> projectiles;  // body indices
-  std::vector<int> plates;       // box bodies in the order the shot line meets them; last: rear wall
+  bool enabled = true;                   // false: no analysis (also when the deck has no moving body)
+  std::vector<int> projectiles;          // body indices
+  std::vector<int> plates;               // box bodies in the order the shot line meets them; last: rear wall
   Vec3 shot_direction = -Vec3::UnitZ();  // unit, the projectile's direction of travel
   double impact_speed = 0.0;             // m/s
   int cloud_reference = 0;               // index into plates: the debris cloud is measured from its rear face
@@ -62,11 +62,12 @@ struct AnalysisConfig {
 
 struct RunConfig {
   std::string title;
-  std::string deck_path;                 // file the deck came from
+  std::string deck_path;  // file the deck came from
   std::vector<MaterialConfig> materials;
   std::vector<BodyConfig> bodies;
-  std::vector<int> symmetry_axes;        // 0 = x, 1 = y, 2 = z: planes through the origin
-  otm::Settings solver;
+  std::vector<int> symmetry_axes;  // 0 = x, 1 = y, 2 = z: planes through the origin
+  SolverSettings solver;           // the keys of `solver` every method reads
+  OtmOptions otm;                  // `solver.otm`
   OutputConfig output;
   CheckpointConfig checkpoint;
   AnalysisConfig analysis;

@@ -1,13 +1,16 @@
 #include "io/deck.hpp"
 
 #include "core/error.hpp"
+#include "core/log.hpp"
 #include "io/deck_overrides.hpp"
 #include "io/deck_parts.hpp"
 #include "io/yaml_reader.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cerrno>
 #include <cstring>
@@ -15,6 +18,7 @@
 #include <limits>
 #include <optional>
 #include <sstream>
+#include <string>
 #include <string_view>
 
 namespace kessler::io {
@@ -35,34 +39,42 @@ std::vector<int> parseSymmetry(const Field& field) {
   return axes;
 }
 
-otm::Settings parseSolver(const Field& field) {
-  MapField map = field.map({"method", "end_time", "cfl", "lme_gamma", "lme_tolerance", "min_neighbours",
-                            "max_steps", "contact_distance", "crack_visibility", "volume_averaging",
-                            "debris_contact", "min_dt_fraction", "max_energy_growth"});
+// OTM's keys, `solver.otm` (also accepted, with a note, directly under `solver`, where they were
+// before 2026-11-27).
+constexpr std::array<std::string_view, 6> otm_keys = {"lme_gamma",        "lme_tolerance",    "min_neighbours",
+                                                      "contact_distance", "crack_visibility", "volume_averaging"};
+
+void parseOtmKey(const std::string& key, const Field& value, OtmOptions& o) {
+  if (key == "lme_gamma") o.lme_gamma = value.positive(units::dimensionless);
+  if (key == "lme_tolerance") {
+    o.lme_tolerance = value.quantity(units::dimensionless);
+    if (!(o.lme_tolerance > 0.0 && o.lme_tolerance < 1.0)) value.fail("must lie in (0, 1)");
+  }
+  // Four nodes at least: a point must lie inside the convex hull of its neighbours in 3D.
+  if (key == "min_neighbours") o.min_neighbours = static_cast<int>(value.integer(4, 10000));
+  if (key == "contact_distance") {
+    o.contact_distance = value.quantity(units::dimensionless);
+    if (o.contact_distance < 0.0) value.fail("must not be negative");
+  }
+  if (key == "crack_visibility") o.crack_visibility = value.boolean();
+  if (key == "volume_averaging") o.volume_averaging = value.boolean();
+}
+
+void parseSolver(const Field& field, RunConfig& config) {
+  const std::vector<std::string_view> moved(otm_keys.begin(), otm_keys.end());
+  MapField map = field.map(
+      {"method", "end_time", "cfl", "max_steps", "min_dt_fraction", "max_energy_growth", "debris_contact", "otm"},
+      moved);
   if (std::optional<Field> method = map.find("method"); method && method->text() != "otm")
     method->fail("unknown method (known: otm)");
-  otm::Settings s;
+  SolverSettings& s = config.solver;
   s.end_time = map.require("end_time").positive(units::time);
   if (std::optional<Field> cfl = map.find("cfl")) {
     s.cfl = cfl->quantity(units::dimensionless);
     if (!(s.cfl > 0.0 && s.cfl <= 1.0)) cfl->fail("must lie in (0, 1]");
   }
-  if (std::optional<Field> gamma = map.find("lme_gamma")) s.lme_gamma = gamma->positive(units::dimensionless);
-  if (std::optional<Field> tolerance = map.find("lme_tolerance")) {
-    s.lme_tolerance = tolerance->quantity(units::dimensionless);
-    if (!(s.lme_tolerance > 0.0 && s.lme_tolerance < 1.0)) tolerance->fail("must lie in (0, 1)");
-  }
-  // Four nodes at least: a point must lie inside the convex hull of its neighbours in 3D.
-  if (std::optional<Field> neighbours = map.find("min_neighbours"))
-    s.min_neighbours = static_cast<int>(neighbours->integer(4, 10000));
   if (std::optional<Field> steps = map.find("max_steps"))
     s.max_steps = steps->integer(0, std::numeric_limits<long>::max());
-  if (std::optional<Field> contact = map.find("contact_distance")) {
-    s.contact_distance = contact->quantity(units::dimensionless);
-    if (s.contact_distance < 0.0) contact->fail("must not be negative");
-  }
-  if (std::optional<Field> visibility = map.find("crack_visibility")) s.crack_visibility = visibility->boolean();
-  if (std::optional<Field> averaging = map.find("volume_averaging")) s.volume_averaging = averaging->boolean();
   if (std::optional<Field> contact = map.find("debris_contact")) s.debris_contact = contact->boolean();
   if (std::optional<Field> fraction = map.find("min_dt_fraction")) {
     s.min_dt_fraction = fraction->quantity(units::dimensionless);
@@ -70,7 +82,23 @@ otm::Settings parseSolver(const Field& field) {
   }
   if (std::optional<Field> growth = map.find("max_energy_growth"))
     s.max_energy_growth = growth->positive(units::dimensionless);
-  return s;
+
+  std::vector<std::string> old_place;
+  std::string first;
+  for (const MapField::Entry& entry : map.entries()) {
+    if (std::find(moved.begin(), moved.end(), entry.key) == moved.end()) continue;
+    if (map.find("otm")) entry.value.fail("belongs in solver.otm, which this deck also has: give it there only");
+    if (old_place.empty()) first = entry.value.source().where(entry.key_mark, entry.value.path());
+    old_place.push_back(entry.key);
+    parseOtmKey(entry.key, entry.value, config.otm);
+  }
+  if (!old_place.empty())
+    log::info("note: {}: solver.{}: OTM's keys now go in solver.otm; the old place still works", first,
+              fmt::join(old_place, ", "));
+  if (std::optional<Field> otm = map.find("otm")) {
+    const MapField own = otm->map(moved);
+    for (const MapField::Entry& entry : own.entries()) parseOtmKey(entry.key, entry.value, config.otm);
+  }
 }
 
 OutputConfig parseOutput(const std::optional<Field>& field, double end_time) {
@@ -103,8 +131,7 @@ CheckpointConfig parseCheckpoint(const std::optional<Field>& field, double end_t
 }
 
 RunConfig parseTree(const Field& top, const fs::path& base_dir) {
-  MapField deck =
-      top.map({"title", "materials", "bodies", "symmetry", "solver", "output", "checkpoint", "analysis"});
+  MapField deck = top.map({"title", "materials", "bodies", "symmetry", "solver", "output", "checkpoint", "analysis"});
   RunConfig config;
   config.deck_path = top.source().file();
   if (std::optional<Field> title = deck.find("title")) config.title = title->text("a title", true);
@@ -112,7 +139,7 @@ RunConfig parseTree(const Field& top, const fs::path& base_dir) {
   if (std::optional<Field> symmetry = deck.find("symmetry")) config.symmetry_axes = parseSymmetry(*symmetry);
   Field bodies = deck.require("bodies");
   config.bodies = parseBodies(bodies, config.materials, config.symmetry_axes, base_dir);
-  config.solver = parseSolver(deck.require("solver"));
+  parseSolver(deck.require("solver"), config);
   config.output = parseOutput(deck.find("output"), config.solver.end_time);
   config.checkpoint = parseCheckpoint(deck.find("checkpoint"), config.solver.end_time);
   checkOverlaps(config.bodies, bodies);
@@ -141,7 +168,8 @@ int secondDocumentLine(const std::string& text) {
   for (int number = 1; std::getline(in, line); ++number) {
     const std::string_view view(line);
     auto marker = [&](std::string_view m) {
-      return view.starts_with(m) && (view.size() == m.size() || std::isspace(static_cast<unsigned char>(view[m.size()])));
+      return view.starts_with(m) &&
+             (view.size() == m.size() || std::isspace(static_cast<unsigned char>(view[m.size()])));
     };
     if (marker("---")) {
       if (content || ended) return number;
@@ -206,8 +234,7 @@ RunConfig parseDeck(const fs::path& deck, const std::vector<std::string>& overri
   std::error_code error;
   const fs::file_status status = fs::status(deck, error);
   if (!fs::exists(status)) throw InputError(fmt::format("{}: cannot read the deck: no such file", name));
-  if (fs::is_directory(status))
-    throw InputError(fmt::format("{}: cannot read the deck: it is a directory", name));
+  if (fs::is_directory(status)) throw InputError(fmt::format("{}: cannot read the deck: it is a directory", name));
   std::ifstream in(deck, std::ios::binary);
   if (!in) throw InputError(fmt::format("{}: cannot read the deck: {}", name, std::strerror(errno)));
   // A deck is a few KiB of text: read at most a bound, so that the wrong file given (a mesh, a

@@ -15,11 +15,13 @@ namespace kessler::io {
 namespace {
 
 // The shortest text that reads back as exactly the same double.
-std::string number(double value) { return fmt::format("{}", value); }
+std::string number(double value) {
+  return fmt::format("{}", value);
+}
 
 void vector(YAML::Emitter& out, const char* key, const Vec3& v, const char* unit) {
-  out << YAML::Key << key << YAML::Value << YAML::Flow << YAML::BeginSeq << number(v[0]) << number(v[1])
-      << number(v[2]) << YAML::EndSeq << YAML::Comment(unit);
+  out << YAML::Key << key << YAML::Value << YAML::Flow << YAML::BeginSeq << number(v[0]) << number(v[1]) << number(v[2])
+      << YAML::EndSeq << YAML::Comment(unit);
 }
 
 void scalar(YAML::Emitter& out, const char* key, double value, const char* unit) {
@@ -28,8 +30,8 @@ void scalar(YAML::Emitter& out, const char* key, double value, const char* unit)
 }
 
 void shape(YAML::Emitter& out, const geometry::Shape& shape) {
-  out << YAML::Key << "shape" << YAML::Value << YAML::BeginMap << YAML::Key << geometry::kindName(shape)
-      << YAML::Value << YAML::BeginMap;
+  out << YAML::Key << "shape" << YAML::Value << YAML::BeginMap << YAML::Key << geometry::kindName(shape) << YAML::Value
+      << YAML::BeginMap;
   if (const auto* sphere = std::get_if<geometry::Sphere>(&shape)) {
     vector(out, "center", sphere->center, "m");
     scalar(out, "radius", sphere->radius, "m");
@@ -94,14 +96,14 @@ void impactMaterial(YAML::Emitter& out, const MaterialConfig& material) {
   else if (const auto* johnson_cook = std::get_if<strength::JohnsonCook>(&p.yield))
     block(out, "strength", strength_model, johnson_cook->parameters(), keys::johnson_cook);
   else
-    out << YAML::Key << "strength" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "model"
-        << YAML::Value << strength_model << YAML::EndMap;
+    out << YAML::Key << "strength" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "model" << YAML::Value
+        << strength_model << YAML::EndMap;
 
   if (p.damage)
     block(out, "failure", "johnson-cook", *p.damage, keys::johnson_cook_damage);
   else
-    out << YAML::Key << "failure" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "model"
-        << YAML::Value << "none" << YAML::EndMap;
+    out << YAML::Key << "failure" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "model" << YAML::Value
+        << "none" << YAML::EndMap;
   block(out, "thermal", nullptr, p.thermal, keys::thermal);
   // No tension cut-off is the default, and infinity has no deck spelling.
   if (std::isfinite(p.pressure_floor)) scalar(out, "tension_cutoff", p.pressure_floor, "Pa");
@@ -116,8 +118,7 @@ void impactMaterial(YAML::Emitter& out, const MaterialConfig& material) {
 void body(YAML::Emitter& out, const BodyConfig& body, const RunConfig& config) {
   out << YAML::BeginMap;
   out << YAML::Key << "name" << YAML::Value << body.name;
-  out << YAML::Key << "material" << YAML::Value
-      << config.materials.at(static_cast<std::size_t>(body.material)).name;
+  out << YAML::Key << "material" << YAML::Value << config.materials.at(static_cast<std::size_t>(body.material)).name;
   shape(out, body.mesh.shape);
   vector(out, "velocity", body.velocity, "m/s");
   scalar(out, "mesh_size", body.mesh.mesh_size, "m");
@@ -191,21 +192,24 @@ std::string resolvedDeckText(const RunConfig& config) {
   for (int axis : config.symmetry_axes) out << (axis == 0 ? "x" : axis == 1 ? "y" : "z");
   out << YAML::EndSeq;
 
-  const otm::Settings& s = config.solver;
+  const SolverSettings& s = config.solver;
   out << YAML::Key << "solver" << YAML::Value << YAML::BeginMap;
   out << YAML::Key << "method" << YAML::Value << "otm";
   scalar(out, "end_time", s.end_time, "s");
   scalar(out, "cfl", s.cfl, "");
-  scalar(out, "lme_gamma", s.lme_gamma, "");
-  scalar(out, "lme_tolerance", s.lme_tolerance, "");
-  out << YAML::Key << "min_neighbours" << YAML::Value << s.min_neighbours;
   out << YAML::Key << "max_steps" << YAML::Value << s.max_steps << YAML::Comment("0: no limit");
-  scalar(out, "contact_distance", s.contact_distance, "times the point spacing");
-  out << YAML::Key << "crack_visibility" << YAML::Value << (s.crack_visibility ? "true" : "false");
-  out << YAML::Key << "volume_averaging" << YAML::Value << (s.volume_averaging ? "true" : "false");
   out << YAML::Key << "debris_contact" << YAML::Value << (s.debris_contact ? "true" : "false");
   scalar(out, "min_dt_fraction", s.min_dt_fraction, "of the initial time step; 0: no check");
   scalar(out, "max_energy_growth", s.max_energy_growth, "relative to the initial total energy");
+  const OtmOptions& o = config.otm;
+  out << YAML::Key << "otm" << YAML::Value << YAML::BeginMap;
+  scalar(out, "lme_gamma", o.lme_gamma, "");
+  scalar(out, "lme_tolerance", o.lme_tolerance, "");
+  out << YAML::Key << "min_neighbours" << YAML::Value << o.min_neighbours;
+  scalar(out, "contact_distance", o.contact_distance, "times the point spacing");
+  out << YAML::Key << "crack_visibility" << YAML::Value << (o.crack_visibility ? "true" : "false");
+  out << YAML::Key << "volume_averaging" << YAML::Value << (o.volume_averaging ? "true" : "false");
+  out << YAML::EndMap;
   out << YAML::EndMap;
 
   out << YAML::Key << "output" << YAML::Value << YAML::BeginMap;

@@ -106,8 +106,8 @@ std::string printable(std::string_view text) {
 void Field::failBare(std::string_view what) const {
   // Keys and values are quoted as written; a binary file must not put control characters (or a
   // second line) into the one-line message.
-  throw InputError(printable(
-      fmt::format("{}: {}: {}", source_->where(mark_, path_), path_.empty() ? "top level" : path_, what)));
+  throw InputError(
+      printable(fmt::format("{}: {}: {}", source_->where(mark_, path_), path_.empty() ? "top level" : path_, what)));
 }
 
 void Field::fail(std::string_view what) const {
@@ -148,8 +148,7 @@ Vec3 Field::vector(units::Dimension dimension) const {
   if (!node_.IsSequence()) fail(fmt::format("must be {}", expected));
   if (node_.size() != 3) fail(fmt::format("must have 3 components, not {}", node_.size()));
   std::vector<Field> components = list();
-  return {components[0].quantity(dimension), components[1].quantity(dimension),
-          components[2].quantity(dimension)};
+  return {components[0].quantity(dimension), components[1].quantity(dimension), components[2].quantity(dimension)};
 }
 
 long Field::integer(long min, long max) const {
@@ -191,12 +190,13 @@ std::vector<Field> Field::list() const {
   return items;
 }
 
-MapField Field::map(std::vector<std::string_view> allowed) const {
+MapField Field::map(std::vector<std::string_view> allowed, std::vector<std::string_view> also_accepted) const {
   if (!node_.IsDefined() || node_.IsNull()) fail("missing value: must be a map such as { key: value }");
   if (!node_.IsMap()) fail("must be a map such as { key: value }");
   MapField result = namedMap();
   for (const MapField::Entry& entry : result.entries()) {
     if (std::find(allowed.begin(), allowed.end(), entry.key) != allowed.end()) continue;
+    if (std::find(also_accepted.begin(), also_accepted.end(), entry.key) != also_accepted.end()) continue;
     Field(*source_, YAML::Node(), entry.value.path(), entry.key_mark)
         .failBare(fmt::format("unknown key (allowed: {})", fmt::join(allowed, ", ")));
   }
@@ -210,8 +210,7 @@ MapField Field::namedMap() const {
   // yaml-cpp keeps repeated keys (and operator[] returns the first), so look for them here.
   for (const auto& pair : node_) {
     const YAML::Node key_node = pair.first;
-    if (!key_node.IsScalar())
-      Field(*source_, key_node, path_, key_node.Mark()).fail("keys must be plain names");
+    if (!key_node.IsScalar()) Field(*source_, key_node, path_, key_node.Mark()).fail("keys must be plain names");
     std::string key = key_node.Scalar();
     YAML::Mark key_mark = key_node.Mark();
     Field key_field(*source_, YAML::Node(), childPath(path_, key), key_mark);

@@ -78,8 +78,9 @@ class Field {
   std::string text(std::string_view what = "a name", bool allow_empty = false) const;
   // A list; each entry a Field with path "<path>[i]".
   std::vector<Field> list() const;
-  // A map whose keys must all be among `allowed`.
-  MapField map(std::vector<std::string_view> allowed) const;
+  // A map whose keys must all be among `allowed`, or among `also_accepted`, which the message about
+  // an unknown key does not list (keys that moved elsewhere but still work).
+  MapField map(std::vector<std::string_view> allowed, std::vector<std::string_view> also_accepted = {}) const;
   // A map with keys of the user's choosing (names of materials).
   MapField namedMap() const;
 

@@ -1,5 +1,7 @@
 #pragma once
 // Settings of the OTM integrator, filled from the deck (or by a verification problem).
+#include "solver/common/settings.hpp"
+
 #include <vector>
 
 namespace kessler::otm {
@@ -12,58 +14,33 @@ struct RigidWall {
   int side = 1;
 };
 
-struct Settings {
-  double end_time = 0.0;  // s
-  double cfl = 0.3;       // factor on the CFL time step
-  // LME locality, beta = gamma / h^2: 4, the local end of Arroyo & Ortiz's range (0.8-4), gives
-  // ~25 nodes per point instead of ~76 at 1.8, a third of the work and memory, and every
-  // verification closer to its reference (docs/performance.md, docs/validation.md).
-  double lme_gamma = 4.0;
-  // Shape functions below this are cut off: r = h sqrt(-ln tol / gamma) (1.52 h at gamma 4).
-  // 1e-4 instead of 1e-6: results within 1e-3 (docs/performance.md).
-  double lme_tolerance = 1e-4;
-  int min_neighbours = 12;  // enlarge the search radius until at least this many nodes
-  long max_steps = 0;       // 0: no limit
-  // Failure diagnosis (solver/otm/diagnostics.hpp): the run stops when the time step falls below
-  // min_dt_fraction of the initial one, or the total energy exceeds (1 + max_energy_growth) times
-  // the initial total energy.
-  double min_dt_fraction = 1e-3;
-  double max_energy_growth = 0.1;
-  // Seizing contact (docs/theory.md §3): the nodes of another body join a point's neighbourhood
-  // only when that body's nearest node lies within contact_distance * h of the point. A point
-  // sits about h/4 inside its own surface, so 1.0 couples across a gap of roughly h/2.
-  double contact_distance = 1.0;
-  // Volume averaging (F-bar over the nodal patch, solver/otm/volume_patch.hpp): the step's volume
-  // change of each point is replaced by its nodal-patch average. Without it, strong shocks
-  // overcompress scattered points (docs/theory.md §4).
-  bool volume_averaging = true;
-  // Its stabilisation: a pressure -alpha rho c^2 d on the volume strain d that the averaging took away
-  // (PointStore::volume_defect), alpha times the point's longitudinal modulus, added to each point's
-  // own stress in the forces. With alpha = 1 the nodes feel each point's whole volumetric stiffness
-  // (the averaged pressure on what the average keeps, the stabilisation on what it takes away), so
-  // the averaged update has no zero-energy mode (the crushed axis of a plastic Taylor bar) and no soft
-  // one, while the state the material sees (density, pressure, heating) stays the patch average
-  // (docs/theory.md §4).
+// The deck's keys (the common ones and `solver.otm`, solver/common/settings.hpp) and what only
+// the verification problems set.
+struct Settings : SolverSettings, OtmOptions {
+  // The volume averaging's stabilisation: a pressure -alpha rho c^2 d on the volume strain d that
+  // the averaging took away (PointStore::volume_defect), alpha times the point's longitudinal
+  // modulus, added to each point's own stress in the forces. With alpha = 1 the nodes feel each
+  // point's whole volumetric stiffness (the averaged pressure on what the average keeps, the
+  // stabilisation on what it takes away), so the averaged update has no zero-energy mode (the
+  // crushed axis of a plastic Taylor bar) and no soft one, while the state the material sees
+  // (density, pressure, heating) stays the patch average (docs/theory.md §4).
   double volume_stabilisation = 1.0;
   // The defect of an intact point relaxes with the time constant of this many wave transits of its
   // spacing, tau = k h / c (0: never), the energy it stored becomes heat, and the stored energy
   // follows the stiffness (docs/theory.md §4).
   double volume_relaxation = 10.0;
-  // Visibility across cracks (docs/theory.md §8): a point does not take nodes of its own body that
-  // lie behind eroded material, so crack faces separate. Needed for brittle crack growth
-  // (`griffith` converges with it, diverges without); off by default because with the scattered
-  // erosion of a shocked impact target it leaves points one-sided neighbourhoods and the run
-  // becomes unstable (measured on examples/sphere-plate.yaml).
-  bool crack_visibility = false;
-  // Debris contact (solver/otm/debris.hpp): debris that reaches a body it may hit (not its own, nor
-  // one its body touched before it was released) strikes it as matter, pushed back by a contact
-  // force against the body's nodes. Without it, debris passes through every body (a Whipple
-  // shield's rear wall would never be hit).
-  bool debris_contact = true;
   std::vector<RigidWall> walls;
   // Eigenerosion (Pandolfi & Ortiz 2012; docs/theory.md §8): radius of the ball B_eps as a
   // multiple of the point spacing h.
   double erosion_radius = 2.0;
 };
+
+// OTM's settings for a deck's solver section.
+inline Settings settingsFor(const SolverSettings& common, const OtmOptions& own) {
+  Settings s;
+  static_cast<SolverSettings&>(s) = common;
+  static_cast<OtmOptions&>(s) = own;
+  return s;
+}
 
 }  // namespace kessler::otm

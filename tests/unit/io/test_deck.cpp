@@ -69,27 +69,28 @@ TEST(Deck, ParsesTheImpactDeckIntoSIValues) {
   EXPECT_EQ(c.symmetry_axes, std::vector<int>{0});
   EXPECT_DOUBLE_EQ(c.solver.end_time, 20e-6);
   EXPECT_DOUBLE_EQ(c.solver.cfl, 0.3);
-  EXPECT_DOUBLE_EQ(c.solver.lme_gamma, 1.8);
-  EXPECT_DOUBLE_EQ(c.solver.lme_tolerance, 1e-6);
-  EXPECT_EQ(c.solver.min_neighbours, 12);
+  EXPECT_DOUBLE_EQ(c.otm.lme_gamma, 1.8);
+  EXPECT_DOUBLE_EQ(c.otm.lme_tolerance, 1e-6);
+  EXPECT_EQ(c.otm.min_neighbours, 12);
   EXPECT_DOUBLE_EQ(c.output.every, 1e-6);
   EXPECT_EQ(c.output.dir, "out");
 }
 
 TEST(Deck, FillsDefaults) {
   const RunConfig c = parseDeck(deck_dir / "good_minimal.yaml");
-  const otm::Settings defaults;
+  const SolverSettings defaults;
+  const OtmOptions otm_defaults;
   EXPECT_EQ(c.title, "");
   EXPECT_EQ(c.materials[0].model, "neo-hookean");
   EXPECT_TRUE(c.symmetry_axes.empty());
   EXPECT_EQ(c.bodies[0].fixed, geometry::FixedNodes::none);
   EXPECT_DOUBLE_EQ(c.solver.end_time, 10e-6);
   EXPECT_DOUBLE_EQ(c.solver.cfl, defaults.cfl);
-  EXPECT_DOUBLE_EQ(c.solver.lme_gamma, defaults.lme_gamma);
-  EXPECT_DOUBLE_EQ(c.solver.lme_tolerance, defaults.lme_tolerance);
-  EXPECT_EQ(c.solver.min_neighbours, defaults.min_neighbours);
+  EXPECT_DOUBLE_EQ(c.otm.lme_gamma, otm_defaults.lme_gamma);
+  EXPECT_DOUBLE_EQ(c.otm.lme_tolerance, otm_defaults.lme_tolerance);
+  EXPECT_EQ(c.otm.min_neighbours, otm_defaults.min_neighbours);
   EXPECT_EQ(c.solver.max_steps, defaults.max_steps);
-  EXPECT_DOUBLE_EQ(c.solver.contact_distance, defaults.contact_distance);
+  EXPECT_DOUBLE_EQ(c.otm.contact_distance, otm_defaults.contact_distance);
   EXPECT_DOUBLE_EQ(c.output.every, 10e-6 / 20);
   EXPECT_EQ(c.output.dir, "out");
 }
@@ -114,8 +115,50 @@ output: { every: 0 }
   EXPECT_DOUBLE_EQ(rod.radius, 5e-3);
   expectVec(c.bodies[0].velocity, Vec3(100, 0, 0));
   EXPECT_EQ(c.solver.max_steps, 1000);
-  EXPECT_DOUBLE_EQ(c.solver.contact_distance, 0.0);
+  EXPECT_DOUBLE_EQ(c.otm.contact_distance, 0.0);
   EXPECT_DOUBLE_EQ(c.output.every, 0.0);
+}
+
+// OTM's keys live in solver.otm; directly under solver (where they were before) they still work,
+// but not both at once, and an unknown key in either place names the keys of that place.
+TEST(Deck, TakesOtmKeysFromSolverOtmAndTheirOldPlace) {
+  const std::string head = R"(
+materials:
+  al: { density: 2700, youngs_modulus: 7e10, poisson_ratio: 0.33 }
+bodies:
+  - { name: cube, material: al, shape: { box: { min: [0, 0, 0], max: [0.01, 0.01, 0.01] } }, mesh_size: 0.005 }
+)";
+  const RunConfig nested = parseDeckString(
+      head + "solver: { end_time: 1 us, otm: { lme_gamma: 2, min_neighbours: 20, crack_visibility: true } }\n",
+      "deck.yaml");
+  EXPECT_DOUBLE_EQ(nested.otm.lme_gamma, 2.0);
+  EXPECT_EQ(nested.otm.min_neighbours, 20);
+  EXPECT_TRUE(nested.otm.crack_visibility);
+  EXPECT_EQ(nested.otm.lme_tolerance, OtmOptions{}.lme_tolerance);
+  const RunConfig old = parseDeckString(
+      head + "solver: { end_time: 1 us, lme_gamma: 2, min_neighbours: 20, crack_visibility: true }\n", "deck.yaml");
+  EXPECT_DOUBLE_EQ(old.otm.lme_gamma, 2.0);
+  EXPECT_EQ(old.otm.min_neighbours, 20);
+  EXPECT_TRUE(old.otm.crack_visibility);
+
+  auto errorOf = [&](const std::string& solver) -> std::string {
+    try {
+      parseDeckString(head + solver, "deck.yaml");
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "no error";
+  };
+  EXPECT_NE(errorOf("solver: { end_time: 1 us, lme_gamma: 2, otm: { min_neighbours: 20 } }\n")
+                .find("solver.lme_gamma: belongs in solver.otm, which this deck also has"),
+            std::string::npos);
+  EXPECT_NE(errorOf("solver: { end_time: 1 us, otm: { gamma: 2 } }\n")
+                .find("solver.otm.gamma: unknown key (allowed: lme_gamma, lme_tolerance, min_neighbours, "
+                      "contact_distance, crack_visibility, volume_averaging)"),
+            std::string::npos);
+  EXPECT_NE(errorOf("solver: { end_time: 1 us, otm: { lme_tolerance: 2 } }\n")
+                .find("solver.otm.lme_tolerance: must lie in (0, 1)"),
+            std::string::npos);
 }
 
 TEST(Deck, ResolvesMeshFilesAgainstTheDeckFolder) {

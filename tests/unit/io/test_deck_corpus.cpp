@@ -63,19 +63,18 @@ TEST_P(BadDeck, FailsWithOneLineThatSaysWhereAndWhy) {
     FAIL() << file << " parsed without error; expected: " << expected;
   } catch (const InputError& e) {
     const std::string message = e.what();
-    EXPECT_NE(message.find(expected), std::string::npos)
-        << "expected: " << expected << "\n     got: " << message;
+    EXPECT_NE(message.find(expected), std::string::npos) << "expected: " << expected << "\n     got: " << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
     EXPECT_TRUE(startsWithLocation(message, file.string())) << message;
   }
 }
 
 INSTANTIATE_TEST_SUITE_P(Corpus, BadDeck, ::testing::ValuesIn(badDecks()),
-                         [](const ::testing::TestParamInfo<std::string>& param_info) {
-                           return param_info.param;
-                         });
+                         [](const ::testing::TestParamInfo<std::string>& param_info) { return param_info.param; });
 
-TEST(BadDeckCorpus, HasAtLeastTwentyDecks) { EXPECT_GE(badDecks().size(), 20u); }
+TEST(BadDeckCorpus, HasAtLeastTwentyDecks) {
+  EXPECT_GE(badDecks().size(), 20u);
+}
 
 }  // namespace
 }  // namespace kessler::io

@@ -65,11 +65,16 @@ void expectSameConfig(const RunConfig& a, const RunConfig& b) {
   EXPECT_EQ(a.symmetry_axes, b.symmetry_axes);
   EXPECT_EQ(a.solver.end_time, b.solver.end_time);
   EXPECT_EQ(a.solver.cfl, b.solver.cfl);
-  EXPECT_EQ(a.solver.lme_gamma, b.solver.lme_gamma);
-  EXPECT_EQ(a.solver.lme_tolerance, b.solver.lme_tolerance);
-  EXPECT_EQ(a.solver.min_neighbours, b.solver.min_neighbours);
+  EXPECT_EQ(a.otm.lme_gamma, b.otm.lme_gamma);
+  EXPECT_EQ(a.otm.lme_tolerance, b.otm.lme_tolerance);
+  EXPECT_EQ(a.otm.min_neighbours, b.otm.min_neighbours);
   EXPECT_EQ(a.solver.max_steps, b.solver.max_steps);
-  EXPECT_EQ(a.solver.contact_distance, b.solver.contact_distance);
+  EXPECT_EQ(a.otm.contact_distance, b.otm.contact_distance);
+  EXPECT_EQ(a.otm.crack_visibility, b.otm.crack_visibility);
+  EXPECT_EQ(a.otm.volume_averaging, b.otm.volume_averaging);
+  EXPECT_EQ(a.solver.debris_contact, b.solver.debris_contact);
+  EXPECT_EQ(a.solver.min_dt_fraction, b.solver.min_dt_fraction);
+  EXPECT_EQ(a.solver.max_energy_growth, b.solver.max_energy_growth);
   EXPECT_EQ(a.output.every, b.output.every);
   EXPECT_EQ(a.output.dir, b.output.dir);
 }
@@ -92,9 +97,9 @@ INSTANTIATE_TEST_SUITE_P(GoodDecks, ResolvedDeck, ::testing::Values("good_impact
 TEST(ResolvedDeckText, IsInSIUnitsWithEveryDefault) {
   const std::string text = resolvedDeckText(parseDeck(deck_dir / "good_minimal.yaml"));
   for (const char* expected :
-       {"density: 2700", "youngs_modulus: 70000000000", "radius: 0.005", "velocity: [0, 0, -200]",
-        "mesh_size: 0.001", "fixed: none", "end_time: ", "cfl: 0.3", "lme_gamma: 4", "min_neighbours: 12",
-        "max_steps: 0", "every: 5", "dir: out"})  // every = end_time / 20, within round-off
+       {"density: 2700", "youngs_modulus: 70000000000", "radius: 0.005", "velocity: [0, 0, -200]", "mesh_size: 0.001",
+        "fixed: none", "end_time: ", "cfl: 0.3", "lme_gamma: 4", "min_neighbours: 12", "max_steps: 0", "every: 5",
+        "dir: out"})  // every = end_time / 20, within round-off
     EXPECT_NE(text.find(expected), std::string::npos) << "missing '" << expected << "' in\n" << text;
 }
 

@@ -1,0 +1,49 @@
+#pragma once
+// The deck's solver section (docs/deck.md, "solver"), as values: the keys every method reads, and
+// each method's own block (`solver.otm`). The deck parser (io/) fills them; a method's settings
+// are built from them by the factory (app/methods.cpp). The solver never sees the deck itself.
+namespace kessler {
+
+// What every method reads.
+struct SolverSettings {
+  double end_time = 0.0;  // s
+  double cfl = 0.3;       // factor on the stable (CFL) time step
+  long max_steps = 0;     // 0: no limit
+  // Failure diagnosis (Method::check): the run stops when the time step falls below
+  // min_dt_fraction of the initial one, or the total energy exceeds (1 + max_energy_growth) times
+  // the initial total energy.
+  double min_dt_fraction = 1e-3;
+  double max_energy_growth = 0.1;
+  // Debris contact: debris that reaches a body it may hit (not its own, nor one its body touched
+  // before it was released) strikes it as matter. Without it, debris passes through every body (a
+  // Whipple shield's rear wall would never be hit).
+  bool debris_contact = true;
+};
+
+// OTM's own keys, `solver.otm` (docs/theory.md §2–4, §8).
+struct OtmOptions {
+  // LME locality, beta = gamma / h^2: 4, the local end of Arroyo & Ortiz's range (0.8-4), gives
+  // ~25 nodes per point instead of ~76 at 1.8, a third of the work and memory, and every
+  // verification closer to its reference (docs/performance.md, docs/validation.md).
+  double lme_gamma = 4.0;
+  // Shape functions below this are cut off: r = h sqrt(-ln tol / gamma) (1.52 h at gamma 4).
+  // 1e-4 instead of 1e-6: results within 1e-3 (docs/performance.md).
+  double lme_tolerance = 1e-4;
+  int min_neighbours = 12;  // enlarge the search radius until at least this many nodes
+  // Seizing contact (docs/theory.md §3): the nodes of another body join a point's neighbourhood
+  // only when that body's nearest node lies within contact_distance * h of the point. A point
+  // sits about h/4 inside its own surface, so 1.0 couples across a gap of roughly h/2.
+  double contact_distance = 1.0;
+  // Volume averaging (F-bar over the nodal patch, solver/otm/volume_patch.hpp): the step's volume
+  // change of each point is replaced by its nodal-patch average. Without it, strong shocks
+  // overcompress scattered points (docs/theory.md §4).
+  bool volume_averaging = true;
+  // Visibility across cracks (docs/theory.md §8): a point does not take nodes of its own body that
+  // lie behind broken material, so crack faces separate. Needed for brittle crack growth
+  // (`griffith` converges with it, diverges without); off by default because with the scattered
+  // erosion of a shocked impact target it leaves points one-sided neighbourhoods and the run
+  // becomes unstable (measured on examples/sphere-plate.yaml).
+  bool crack_visibility = false;
+};
+
+}  // namespace kessler
