@@ -59,7 +59,7 @@ void lmeOnePoint(benchmark::State& state, bool warm) {
   const double h = points.spacing(p);
   const double beta = lme::beta(f.settings.lme_gamma, h);
   for (auto _ : state) {
-    Vec3 lambda = warm ? points.lambda[p] : Vec3::Zero();
+    Vec3 lambda = warm ? f.model.lme_lambda[p] : Vec3::Zero();
     const lme::Result r = lme::shapeFunctions(d, beta, h, lambda, N, dN);
     benchmark::DoNotOptimize(r);
     benchmark::DoNotOptimize(dN.data());

@@ -84,7 +84,6 @@ struct PointStore {
   // it is debris, -1 if it has struck no body yet, -2 - b after it last struck body b.
   std::vector<std::int64_t> passes_through;
   std::vector<std::int32_t> carrier;
-  std::vector<Vec3> lambda;  // LME Lagrange multiplier, warm start for the next solve
   LocalIndex owned = 0;
 
   // Every array, once: visit(name, array, value of a new entry). Store is PointStore, const or not.
@@ -117,9 +116,8 @@ struct PointStore {
     visit("eroded", s.broken, std::uint8_t{0});
     visit("passes_through", s.passes_through, std::int64_t{0});
     visit("carrier", s.carrier, std::int32_t{-1});
-    visit("lambda", s.lambda, zero);
   }
-  static constexpr int field_count = 26;
+  static constexpr int field_count = 25;
 
   LocalIndex size() const { return static_cast<LocalIndex>(x.size()); }
   void resize(std::size_t n);

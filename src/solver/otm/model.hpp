@@ -10,6 +10,9 @@ namespace kessler::otm {
 struct Model : ParticleState {
   NodeStore nodes;
   Connectivity connectivity;  // point-node neighbourhoods and shape functions
+  // Per point: the LME Lagrange multiplier of its last solve, the warm start of the next (sized
+  // and reordered with the points; zero is a valid start).
+  std::vector<Vec3> lme_lambda;
 };
 
 }  // namespace kessler::otm

@@ -139,8 +139,8 @@ lme::Result Neighbourhoods::shapeFunctionsAt(Model& model, LocalIndex p, std::sp
   for (std::size_t i = 0; i < row.size(); ++i) s.offsets[i] = points.x[p] - model.nodes.x[row[i]];
   // Nodes nearly coplanar as seen from the point (lme::min_covariance) are refused: failed material
   // is retried or released, intact material retried (retryPoints).
-  return lme::shapeFunctions(s.offsets, lme::beta(gamma_scale * settings_.lme_gamma, h), h, model.points.lambda[p], N,
-                             dN, true);
+  return lme::shapeFunctions(s.offsets, lme::beta(gamma_scale * settings_.lme_gamma, h), h, model.lme_lambda[p], N, dN,
+                             true);
 }
 
 // A point near a strongly compressed or re-entrant surface can fall outside the hull of the nodes
@@ -180,7 +180,7 @@ void Neighbourhoods::retryPoints(Model& model) {
       const auto size = static_cast<std::size_t>(n);
       s.N.resize(start[k] + size);
       s.dN.resize(start[k] + size);
-      points.lambda[p].setZero();  // the warm start may be what failed
+      model.lme_lambda[p].setZero();  // the warm start may be what failed
       // Smoother shape functions too (gamma halved at each attempt): a point squeezed into a layer
       // of nodes (against a rigid wall, say) sees the nodes beyond the layer with weights
       // exp(-gamma (d/h)^2) that vanish at gamma = 4, and its covariance turns singular.
@@ -277,6 +277,7 @@ void Neighbourhoods::update(Model& model) {
   PointStore& points = model.points;
   Connectivity& conn = model.connectivity;
   const LocalIndex np = points.owned;
+  if (model.lme_lambda.size() != points.x.size()) model.lme_lambda.resize(points.x.size(), Vec3::Zero());
 
   Stopwatch watch;
   // Cells of the mean cut-off radius of the intact points: a query with a larger radius visits more
@@ -371,7 +372,7 @@ void Neighbourhoods::update(Model& model) {
                                        std::span<double>(conn.N.data() + first, visible),
                                        std::span<Vec3>(conn.dN.data() + first, visible), s, spacing_[p]);
       if (r.status != lme::Status::converged && visible < n) {
-        model.points.lambda[p].setZero();
+        model.lme_lambda[p].setZero();
         r = shapeFunctionsAt(model, p, std::span<const LocalIndex>(row, n), std::span<double>(conn.N.data() + first, n),
                              std::span<Vec3>(conn.dN.data() + first, n), s, spacing_[p]);
       }

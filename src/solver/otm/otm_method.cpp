@@ -46,6 +46,9 @@ void OtmMethod::save(StateWriter& out) const {
                    values.size(), nodes.x.size());
     out.array(fmt::format("/nodes/{}", name), values);
   });
+  KESSLER_VERIFY(model_.lme_lambda.size() == model_.points.x.size(), "checkpoint: {} LME multipliers for {} points",
+                 model_.lme_lambda.size(), model_.points.x.size());
+  out.array("/points/lambda", model_.lme_lambda);
   // The transpose (node -> entries) is rebuilt on reading: it is a pure function of these.
   static_assert(sizeof(Connectivity) == 6 * sizeof(std::vector<double>),
                 "Connectivity changed: check what OtmMethod::save stores and load rebuilds");
@@ -67,6 +70,7 @@ void OtmMethod::load(const StateReader& in) {
   if (nodes.owned != nodes.size()) in.fail("use the nodes: the owned count differs from the stored size");
   Connectivity& conn = model_.connectivity;
   const PointStore& points = model_.points;
+  in.array("/points/lambda", model_.lme_lambda, static_cast<std::size_t>(points.size()));
   in.array("/connectivity/offset", conn.offset, static_cast<std::size_t>(points.size()) + 1);
   const std::size_t entries = in.length("/connectivity/node");
   in.array("/connectivity/node", conn.node, entries);

@@ -7,8 +7,8 @@
 
 namespace kessler::otm {
 
-int addBody(Model& model, const std::string& name, const MaterialPtr& material,
-            const geometry::Discretisation& mesh, const Vec3& velocity) {
+int addBody(Model& model, const std::string& name, const MaterialPtr& material, const geometry::Discretisation& mesh,
+            const Vec3& velocity) {
   KESSLER_VERIFY(material != nullptr, "body '{}' has no material", name);
   const int body = static_cast<int>(model.bodies.size());
   int material_index = -1;
@@ -25,6 +25,7 @@ int addBody(Model& model, const std::string& name, const MaterialPtr& material,
   const auto point_begin = static_cast<std::size_t>(points.size());
   nodes.resize(node_begin + mesh.nodes.size());
   points.resize(point_begin + mesh.points.size());
+  model.lme_lambda.resize(points.size(), Vec3::Zero());
 
   for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
     const std::size_t a = node_begin + i;

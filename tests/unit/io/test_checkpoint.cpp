@@ -88,7 +88,7 @@ long differences(const otm::Model& a, const otm::Model& b) {
          differing(p.damage, q.damage) + differing(p.strain_energy, q.strain_energy) +
          differing(p.ductile_work, q.ductile_work) + differing(p.viscous_pressure, q.viscous_pressure) +
          differing(p.be, q.be) + differing(p.broken, q.broken) + differing(p.passes_through, q.passes_through) +
-         differing(p.carrier, q.carrier) + differing(p.lambda, q.lambda) + differing(m.id, n.id) +
+         differing(p.carrier, q.carrier) + differing(a.lme_lambda, b.lme_lambda) + differing(m.id, n.id) +
          differing(m.body, n.body) + differing(m.x, n.x) + differing(m.v, n.v) + differing(m.mass, n.mass) +
          differing(m.momentum, n.momentum) + differing(m.force, n.force) + differing(m.constrained, n.constrained) +
          differing(m.prescribed_v, n.prescribed_v) + differing(a.connectivity.offset, b.connectivity.offset) +
