@@ -50,7 +50,7 @@ Fixture& fixture(int cubes) {
 void lmeOnePoint(benchmark::State& state, bool warm) {
   Fixture& f = fixture(12);
   const PointStore& points = f.model.points;
-  const Connectivity& conn = f.model.connectivity;
+  const otm::Connectivity& conn = f.model.connectivity;
   const LocalIndex p = points.owned / 2;
   std::vector<Vec3> d;
   for (Index e = conn.offset[p]; e < conn.offset[p + 1]; ++e) d.push_back(points.x[p] - f.model.nodes.x[conn.node[e]]);

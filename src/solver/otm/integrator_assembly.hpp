@@ -6,8 +6,8 @@
 // pass then gathers over each node's entries in point order. The gather reads one record per
 // entry instead of five scattered arrays, and its summation order does not depend on the
 // number of threads.
-#include "particles/connectivity.hpp"
 #include "particles/store.hpp"
+#include "solver/otm/connectivity.hpp"
 
 #include <vector>
 

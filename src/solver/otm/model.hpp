@@ -1,9 +1,9 @@
 #pragma once
 // Everything the OTM integrator advances: the shared particle state (material points, bodies,
 // materials, links) and OTM's own discretisation, the nodes and the point-node neighbourhoods.
-#include "particles/connectivity.hpp"
 #include "particles/store.hpp"
 #include "solver/common/particle_state.hpp"
+#include "solver/otm/connectivity.hpp"
 
 namespace kessler::otm {
 

@@ -8,8 +8,8 @@
 //     patch average, which removes the point-wise volume noise of a 3-D shock on irregular points;
 //   - the record of what averaging took away (PointStore::volume_defect), which the stabilisation
 //     pressure pushes back on in the forces, so that the averaging has no zero-energy mode.
-#include "particles/connectivity.hpp"
 #include "particles/store.hpp"
+#include "solver/otm/connectivity.hpp"
 
 #include <array>
 #include <limits>

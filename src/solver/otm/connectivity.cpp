@@ -1,4 +1,4 @@
-#include "particles/connectivity.hpp"
+#include "solver/otm/connectivity.hpp"
 
 #include "core/error.hpp"
 
@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <limits>
 
-namespace kessler {
+namespace kessler::otm {
 
 // Counting sort of the entries by node, in parallel and deterministic: thread t takes a
 // contiguous block of points (so of entries), counts its entries per node, and writes them after
@@ -86,4 +86,4 @@ void Connectivity::buildTranspose(LocalIndex node_count, std::vector<std::uint32
   }
 }
 
-}  // namespace kessler
+}  // namespace kessler::otm

@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace kessler {
+namespace kessler::otm {
 
 struct Connectivity {
   std::vector<Index> offset;     // size points+1; entries of point p: [offset[p], offset[p+1])
@@ -40,4 +40,4 @@ struct Connectivity {
   void buildTranspose(LocalIndex node_count, std::vector<std::uint32_t>& scratch);
 };
 
-}  // namespace kessler
+}  // namespace kessler::otm

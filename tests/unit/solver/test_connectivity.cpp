@@ -1,11 +1,11 @@
-#include "particles/connectivity.hpp"
+#include "solver/otm/connectivity.hpp"
 
 #include <gtest/gtest.h>
 #include <omp.h>
 
 #include <random>
 
-namespace kessler {
+namespace kessler::otm {
 namespace {
 
 // The transpose lists, for every node, exactly the entries that reference it, in increasing
@@ -63,4 +63,4 @@ TEST(Connectivity, TransposeDoesNotDependOnTheThreadCount) {
 }
 
 }  // namespace
-}  // namespace kessler
+}  // namespace kessler::otm
