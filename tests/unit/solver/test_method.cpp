@@ -1,31 +1,23 @@
 // OTM seen through the method interface (solver/common/method.hpp): the run loop, the bench and
 // the analysis drive it only through these calls, so each must agree with the integrator it wraps.
+#include "../blocks.hpp"
 #include "core/error.hpp"
-#include "geometry/structured_mesh.hpp"
-#include "material/neo_hookean.hpp"
 #include "solver/common/method.hpp"
 #include "solver/otm/integrator.hpp"
 #include "solver/otm/otm_method.hpp"
-#include "solver/otm/setup.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cstring>
-#include <limits>
 #include <memory>
 
 namespace kessler::otm {
 namespace {
 
 Model cube() {
-  NeoHookeanParameters p;
-  p.density = 2700.0;
-  p.youngs_modulus = 70e9;
-  p.poisson_ratio = 0.33;
-  const geometry::Discretisation disc = geometry::discretise(
-      geometry::structuredBoxMesh(geometry::Box{Vec3(0, 0, 0), Vec3(3e-3, 2e-3, 2e-3)}, {3, 2, 2}));
   Model model;
-  addBody(model, "cube", std::make_shared<NeoHookean>("al", p), disc, Vec3(0, 0, -100.0));
+  testing::addBlock(model, "cube", geometry::Box{Vec3(0, 0, 0), Vec3(3e-3, 2e-3, 2e-3)}, {3, 2, 2},
+                    testing::aluminium(), Vec3(0, 0, -100.0));
   return model;
 }
 
