@@ -56,11 +56,7 @@ void sortForLocality(Model& model) {
   std::iota(order.begin(), order.end(), 0);
   for (const BodyInfo& body : model.bodies) sortRange(points.x, body.point_begin, body.point_end, lo, hi, order);
   points.permute(order);
-  if (model.lme_lambda.size() == order.size()) {
-    std::vector<Vec3> lambda(order.size());
-    for (std::size_t i = 0; i < order.size(); ++i) lambda[i] = model.lme_lambda[order[i]];
-    model.lme_lambda.swap(lambda);
-  }
+  model.lme_lambda.assign(order.size(), Vec3::Zero());  // before the first solve: no warm start yet
   std::vector<LocalIndex> renumber(order.size());
   for (std::size_t i = 0; i < order.size(); ++i) renumber[order[i]] = static_cast<LocalIndex>(i);
   for (auto& [i, j] : model.adjacency) {

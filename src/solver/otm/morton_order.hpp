@@ -13,7 +13,8 @@ namespace kessler::otm {
 // Morton key of a position quantised to 21 bits per axis within the box [lo, hi].
 std::uint64_t mortonKey(const Vec3& x, const Vec3& lo, const Vec3& hi);
 
-// Sorts points and nodes body by body; the connectivity is cleared (to be rebuilt).
+// Sorts points and nodes body by body, before the first shape-function solve: the connectivity is
+// cleared (to be rebuilt) and the LME warm starts are zero.
 void sortForLocality(Model& model);
 
 }  // namespace kessler::otm
