@@ -277,7 +277,6 @@ void Neighbourhoods::update(Model& model) {
   PointStore& points = model.points;
   Connectivity& conn = model.connectivity;
   const LocalIndex np = points.owned;
-  if (model.lme_lambda.size() != points.x.size()) model.lme_lambda.resize(points.x.size(), Vec3::Zero());
 
   Stopwatch watch;
   // Cells of the mean cut-off radius of the intact points: a query with a larger radius visits more
