@@ -78,7 +78,7 @@ struct PointStore {
   // 1 once the point has broken (eigenerosion, damage or spall): no strength, no tension; failed(p)
   // while it stays in its body, debris(p) once released (stored and written as "eroded").
   std::vector<std::uint8_t> broken;
-  // Debris contact (solver/otm/debris.hpp), for broken points: bit b set if body b cannot stop
+  // Debris contact (solver/common/debris_contact.hpp), for broken points: bit b set if body b cannot stop
   // the point (its own body and the bodies that body touched when it was released; 0 before),
   // and the body whose nodes carry it: its own while it is failed but not yet released, none once
   // it is debris, -1 if it has struck no body yet, -2 - b after it last struck body b.
@@ -134,7 +134,7 @@ struct PointStore {
     broken[p] = 1;
     carrier[p] = body[p];
   }
-  // Debris point p strikes body b (solver/otm/debris.hpp); the last body it struck, -1 if none.
+  // Debris point p strikes body b (solver/common/debris_contact.hpp); the last body it struck, -1 if none.
   void strike(LocalIndex p, int b) { carrier[p] = -2 - b; }
   int lastStruck(LocalIndex p) const { return carrier[p] <= -2 ? -2 - carrier[p] : -1; }
   // Current support size: the reference spacing scaled with the volume change.
@@ -148,7 +148,7 @@ struct BodyInfo {
   LocalIndex point_begin = 0, point_end = 0;
   LocalIndex node_begin = 0, node_end = 0;
   // Bodies it has been in contact with so far, its own included (bit b: body b; the first 64
-  // bodies): what its debris passes through (solver/otm/debris.hpp).
+  // bodies): what its debris passes through (solver/common/debris_contact.hpp).
   std::uint64_t touched = 0;
 };
 

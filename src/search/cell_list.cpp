@@ -7,7 +7,7 @@
 
 namespace kessler {
 
-void CellList::build(const std::vector<Vec3>& x, LocalIndex count, double cell_size) {
+void CellList::build(std::span<const Vec3> x, LocalIndex count, double cell_size) {
   KESSLER_VERIFY(cell_size > 0.0 && std::isfinite(cell_size), "cell list: invalid cell size {}", cell_size);
   // The bounding box (min and max are exact, so the parallel reduction gives the same box for
   // any thread count).

@@ -11,6 +11,7 @@
 #include <immintrin.h>
 #endif
 #include <cmath>
+#include <span>
 #include <vector>
 
 namespace kessler {
@@ -19,7 +20,7 @@ class CellList {
  public:
   // Bins positions [0, count) into cubic cells of edge `cell_size` (enlarged if the grid
   // would have far more cells than positions, e.g. for a sparse debris cloud).
-  void build(const std::vector<Vec3>& x, LocalIndex count, double cell_size);
+  void build(std::span<const Vec3> x, LocalIndex count, double cell_size);
 
   // Calls f(index, squared distance) for every binned position within `radius` of q.
   template <typename F>

@@ -44,7 +44,7 @@ TaylorBarResult runTaylorBar(double mesh_size, double cfl, bool volume_averaging
   settings.end_time = 80e-6;
   settings.cfl = cfl;
   settings.volume_averaging = volume_averaging;
-  settings.walls.push_back(otm::RigidWall{2, 0.0, 1});
+  settings.walls.push_back(RigidWall{2, 0.0, 1});
   otm::Integrator integrator(model, settings);
   integrator.initialise();
   while (!integrator.finished()) integrator.step();
@@ -69,7 +69,7 @@ TaylorBarResult runTaylorBar(double mesh_size, double cfl, bool volume_averaging
     const double ratio = otm::stepLength(model, q) / points.sound_speed[q];
     if (ratio >= limit) continue;
     limit = ratio;
-    r.min_stretch = otm::smallestStretch(points.F[q]);
+    r.min_stretch = smallestStretch(points.F[q]);
     r.limiting_r = std::hypot(points.x[q][0], points.x[q][1]);
     r.limiting_z = points.x[q][2];
     r.limiting_h0 = points.spacing0[q];

@@ -3,7 +3,7 @@
 // fractured by eigenerosion or damage) stays in its body while it bears compression, as a
 // hydrocode's failed cell does: a shattered projectile still pushes on the plate it strikes. Once
 // it bears none (no pressure, no viscous compression) it is released: it leaves its body as
-// debris, flies ballistically and may strike another body (solver/otm/debris.hpp).
+// debris, flies ballistically and may strike another body (solver/common/debris_contact.hpp).
 //
 // A released point leaves with the mass-weighted mean velocity of the points of its ball
 // B_eps(x_p) that are still part of its body (intact or failed), not with its own: the FLIP-style

@@ -6,144 +6,40 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cmath>
-#include <limits>
-#include <vector>
 
 namespace kessler::otm {
-namespace {
-
-constexpr LocalIndex block = 2048;  // points per partial energy sum
-
-std::string where(const StepInfo& at) {
-  return fmt::format("step {}, t = {:.6g} s", at.step, at.time);
-}
-
-std::string vec(const Vec3& v) {
-  return fmt::format("({:.6g}, {:.6g}, {:.6g})", v[0], v[1], v[2]);
-}
-
-bool pointHealthy(const PointStore& s, LocalIndex p) {
-  return s.x[p].allFinite() && s.v[p].allFinite() && s.stress[p].allFinite() && std::isfinite(s.energy[p]) &&
-         std::isfinite(s.volume[p]) && s.volume[p] > 0.0;
-}
-
-// The first unhealthy quantity of point p, named and with its value.
-std::string pointProblem(const PointStore& s, LocalIndex p) {
-  if (!s.x[p].allFinite()) return fmt::format("non-finite position {}", vec(s.x[p]));
-  if (!s.v[p].allFinite()) return fmt::format("non-finite velocity v = {} m/s", vec(s.v[p]));
-  if (!s.stress[p].allFinite()) {
-    const Mat3& t = s.stress[p];
-    return fmt::format("non-finite stress (diagonal {:.6g}, {:.6g}, {:.6g} Pa)", t(0, 0), t(1, 1), t(2, 2));
-  }
-  if (!std::isfinite(s.energy[p])) return fmt::format("non-finite specific internal energy e = {} J/kg", s.energy[p]);
-  return fmt::format("volume collapsed or non-finite: V = {:.6g} m^3 (initially {:.6g} m^3)", s.volume[p],
-                     s.volume0[p]);
-}
-
-}  // namespace
-
-std::string describePoint(const Model& model, const StepInfo& at, LocalIndex p, const std::string& what) {
-  const PointStore& s = model.points;
-  const auto body = static_cast<std::size_t>(s.body[p]);
-  return fmt::format("{}: material point {} of body '{}' at {} m: {}", where(at), s.id[p],
-                     body < model.bodies.size() ? model.bodies[body].name : "?", vec(s.x[p]), what);
-}
 
 std::string describeNode(const Model& model, const StepInfo& at, LocalIndex a, const std::string& what) {
   const NodeStore& s = model.nodes;
   const auto body = static_cast<std::size_t>(s.body[a]);
-  return fmt::format("{}: node {} of body '{}' at {} m: {}", where(at), s.id[a],
-                     body < model.bodies.size() ? model.bodies[body].name : "?", vec(s.x[a]), what);
+  return fmt::format("{}: node {} of body '{}' at {} m: {}", describeStep(at), s.id[a],
+                     body < model.bodies.size() ? model.bodies[body].name : "?", describeVector(s.x[a]), what);
 }
 
 void Diagnostics::check(const Model& model, const StepInfo& at, double reference_energy) {
-  checkNodes(model, at);
-  checkPoints(model, at);
-  checkTimeStep(model, at);
-  checkEnergy(model, at, reference_energy);
-}
-
-void Diagnostics::checkNodes(const Model& model, const StepInfo& at) const {
   const NodeStore& nodes = model.nodes;
   LocalIndex bad = nodes.owned;
 #pragma omp parallel for schedule(static) reduction(min : bad)
   for (LocalIndex a = 0; a < nodes.owned; ++a)
     if (!nodes.x[a].allFinite() || !nodes.v[a].allFinite()) bad = std::min(bad, a);
-  if (bad == nodes.owned) return;
-  const std::string what = nodes.x[bad].allFinite() ? fmt::format("non-finite velocity v = {} m/s", vec(nodes.v[bad]))
-                                                    : fmt::format("non-finite position {}", vec(nodes.x[bad]));
-  throw NumericalError(describeNode(model, at, bad, what));
-}
-
-// One pass for the finiteness checks and the total energy: the lowest failing index and fixed
-// blocks summed in order, so that both are the same for any number of threads.
-void Diagnostics::checkPoints(const Model& model, const StepInfo& at) {
-  const PointStore& s = model.points;
-  const LocalIndex n = s.owned;
-  const LocalIndex blocks = (n + block - 1) / block;
-  block_energy_.resize(static_cast<std::size_t>(blocks));
-  LocalIndex bad = n;
-#pragma omp parallel for schedule(static) reduction(min : bad)
-  for (LocalIndex b = 0; b < blocks; ++b) {
-    double sum = 0.0;
-    const LocalIndex end = std::min(n, (b + 1) * block);
-    for (LocalIndex p = b * block; p < end; ++p) {
-      if (!pointHealthy(s, p)) bad = std::min(bad, p);
-      // Internal energy by its size: under the compatible energy update a spurious source shows as
-      // kinetic energy gained and a point cooled below zero (docs/theory.md §4 step 5).
-      sum += s.mass[p] * (0.5 * s.v[p].squaredNorm() + std::abs(s.energy[p]));
-    }
-    block_energy_[static_cast<std::size_t>(b)] = sum;
+  if (bad < nodes.owned) {
+    const std::string what = nodes.x[bad].allFinite()
+                                 ? fmt::format("non-finite velocity v = {} m/s", describeVector(nodes.v[bad]))
+                                 : fmt::format("non-finite position {}", describeVector(nodes.x[bad]));
+    throw NumericalError(describeNode(model, at, bad, what));
   }
-  if (bad < n) throw NumericalError(describePoint(model, at, bad, pointProblem(s, bad)));
-  energy_ = 0.0;
-  for (double e : block_energy_) energy_ += e;
-}
-
-void Diagnostics::checkTimeStep(const Model& model, const StepInfo& at) const {
-  const double floor = settings_.min_dt_fraction * at.dt_initial;
-  if (settings_.min_dt_fraction <= 0.0 || at.dt_next >= floor || model.points.owned == 0) return;
-  // Name the point that sets the step (Integrator::stableStep): the smallest l / c with l its
-  // stepLength, lowest index on a tie.
-  const PointStore& s = model.points;
-  std::vector<double> ratio(s.owned, std::numeric_limits<double>::infinity());
-#pragma omp parallel for schedule(static)
-  for (LocalIndex p = 0; p < s.owned; ++p)
-    if (!s.debris(p)) ratio[p] = stepLength(model, p) / s.sound_speed[p];
-  const auto limiting = static_cast<LocalIndex>(std::min_element(ratio.begin(), ratio.end()) - ratio.begin());
-  throw NumericalError(describePoint(
-      model, at, limiting,
-      fmt::format("time step collapsed: dt = {:.6g} s is below min_dt_fraction {:.6g} of the initial {:.6g} s "
-                  "(this point sets it: length {:.6g} m, from h0 times its smallest principal stretch "
-                  "lambda_min = {:.6g} or, where that is below half its spacing, from its support's spread; "
-                  "sound speed c = {:.6g} m/s, volume V/V0 = {:.6g})",
-                  at.dt_next, settings_.min_dt_fraction, at.dt_initial, stepLength(model, limiting),
-                  smallestStretch(s.F[limiting]), s.sound_speed[limiting], s.volume[limiting] / s.volume0[limiting])));
-}
-
-void Diagnostics::checkEnergy(const Model& model, const StepInfo& at, double reference_energy) const {
-  if (!(reference_energy > 0.0) || energy_ <= (1.0 + settings_.max_energy_growth) * reference_energy ||
-      model.points.owned == 0)
-    return;
-  const NodeStore& nodes = model.nodes;
-  for (LocalIndex a = 0; a < nodes.owned; ++a)
-    if (nodes.constrained[a] != 0 && nodes.prescribed_v[a].squaredNorm() > 0.0) return;  // a piston does work
-  // Name the point with the largest specific energy, where a spurious source usually shows.
-  const PointStore& s = model.points;
-  double largest = -std::numeric_limits<double>::infinity();
-  auto specific = [&](LocalIndex p) { return 0.5 * s.v[p].squaredNorm() + std::abs(s.energy[p]); };
-#pragma omp parallel for schedule(static) reduction(max : largest)
-  for (LocalIndex p = 0; p < s.owned; ++p) largest = std::max(largest, specific(p));
-  LocalIndex hottest = 0;
-  while (hottest + 1 < s.owned && specific(hottest) < largest) ++hottest;
-  throw NumericalError(describePoint(
-      model, at, hottest,
-      fmt::format("energy grew without a source: total energy = {:.6g} J exceeds the initial {:.6g} J by {:.3g}% "
-                  "(max_energy_growth {:.3g}%); this point has the largest specific energy, {:.6g} J/kg "
-                  "(speed {:.6g} m/s, internal {:.6g} J/kg)",
-                  energy_, reference_energy, 100.0 * (energy_ / reference_energy - 1.0),
-                  100.0 * settings_.max_energy_growth, largest, s.v[hottest].norm(), s.energy[hottest])));
+  bool driven = false;  // a piston does work
+  for (LocalIndex a = 0; a < nodes.owned && !driven; ++a)
+    driven = nodes.constrained[a] != 0 && nodes.prescribed_v[a].squaredNorm() > 0.0;
+  const StepLengthRule rule{
+      [&](LocalIndex p) { return stepLength(model, p); },
+      [&](LocalIndex p) {
+        return fmt::format(
+            "from h0 times its smallest principal stretch lambda_min = {:.6g} or, where that is below "
+            "half its spacing, from its support's spread",
+            smallestStretch(model.points.F[p]));
+      }};
+  points_.check(model, at, reference_energy, rule, driven);
 }
 
 }  // namespace kessler::otm

@@ -1,13 +1,12 @@
 #include "solver/otm/integrator.hpp"
 
 #include "core/error.hpp"
+#include "solver/common/debris_contact.hpp"
 #include "solver/common/release.hpp"
-#include "solver/otm/debris.hpp"
+#include "solver/common/stable_step.hpp"
 #include "solver/otm/integrator_assembly.hpp"
 #include "solver/otm/morton_order.hpp"
 #include "solver/otm/volume_patch.hpp"
-
-#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>
@@ -87,8 +86,12 @@ void Integrator::advance(double dt) {
   {
     ScopedPhase phase(timers_, "assembly");
     assembleNodes();
-    // Debris that strikes a body pushes its nodes (solver/otm/debris.hpp).
-    if (settings_.debris_contact) contact_.apply(model_, 0.5 * (dt_last_ + dt));
+    // Debris that strikes a body pushes its nodes (solver/common/debris_contact.hpp).
+    if (settings_.debris_contact) {
+      NodeStore& nodes = model_.nodes;
+      contact_.apply(model_, Carriers{nodes.x, nodes.momentum, nodes.mass, nodes.body, nodes.force, nodes.owned},
+                     0.5 * (dt_last_ + dt));
+    }
   }
   {
     ScopedPhase phase(timers_, "node update");
@@ -150,13 +153,7 @@ void Integrator::updateNodes(double dt, double dt_average) {
     }
     const Vec3 v_old = nodes.momentum[a] / nodes.mass[a];
     Vec3 v_new = v_old + dt_average * nodes.force[a] / nodes.mass[a];
-    for (int i = 0; i < 3; ++i)
-      if (nodes.constrained[a] & (1u << i)) v_new[i] = nodes.prescribed_v[a][i];
-    // A rigid wall stops the normal motion that would carry the node through it.
-    for (const RigidWall& wall : settings_.walls) {
-      const double gap = nodes.x[a][wall.axis] - wall.position;
-      if (wall.side * (gap + dt * v_new[wall.axis]) < 0.0) v_new[wall.axis] = -gap / dt;
-    }
+    imposeBoundaries(nodes.constrained[a], nodes.prescribed_v[a], settings_.walls, nodes.x[a], dt, v_new);
     increment_[a].dv = v_new - v_old;
     increment_[a].du = dt * v_new;
     nodes.v[a] = v_new;
@@ -301,21 +298,6 @@ void Integrator::updateMaterials(double dt) {
   if (bad < points.owned) failAtPoint(bad, "the material update gave a non-finite stress, energy or sound speed");
 }
 
-namespace {
-
-// The square root of the smallest eigenvalue of a symmetric positive semi-definite matrix (closed form).
-double smallestRootEigenvalue(const Mat3& symmetric) {
-  Eigen::SelfAdjointEigenSolver<Mat3> eigen;
-  eigen.computeDirect(symmetric, Eigen::EigenvaluesOnly);
-  return std::sqrt(std::max(eigen.eigenvalues()[0], 0.0));
-}
-
-}  // namespace
-
-double smallestStretch(const Mat3& F) {
-  return smallestRootEigenvalue(F.transpose() * F);
-}
-
 double stepLength(const Model& model, LocalIndex p) {
   const PointStore& points = model.points;
   // Failed material has no shear stiffness and its F is history only (its shape functions, as
@@ -339,26 +321,12 @@ double stepLength(const Model& model, LocalIndex p) {
   return std::max(stretched, std::min(spacing, support_lengths * smallestRootEigenvalue(covariance)));
 }
 
-// CFL condition over material points: dt = cfl * min_p l_p / c_p (docs/theory.md §4 step 7). The
-// length l_p is stepLength: the reference spacing times the smallest principal stretch of F (plastic
-// flow keeps the volume, so h0 J^(1/3) would not shrink, while it can flatten the material to a
-// fraction of its spacing), or the spread of a flattened point's support. And no point may change its volume by
-// more than cfl/3 (10% at the default) in a step, |div v| dt <= cfl/3, as LULESH's dvovmax bounds
-// it: the bound that sets the step where there is no sound speed (a cold gas, p = 0); elsewhere
-// the viscosity's share of the signal speed makes it redundant.
+// The stable step over material points (solver/common/stable_step.hpp), each measured by stepLength,
+// and no longer than debris contact allows.
 double Integrator::stableStep() const {
-  const PointStore& points = model_.points;
-  double dt = std::numeric_limits<double>::infinity();
-#pragma omp parallel for schedule(static) reduction(min : dt)
-  for (LocalIndex p = 0; p < points.owned; ++p) {
-    if (points.debris(p)) continue;
-    if (points.sound_speed[p] > 0.0) dt = std::min(dt, stepLength(model_, p) / points.sound_speed[p]);
-    if (volume_rate_[p] != 0.0) dt = std::min(dt, 1.0 / (3.0 * std::abs(volume_rate_[p])));
-  }
-  if (settings_.debris_contact) dt = std::min(dt, contact_.stepBound());
-  KESSLER_VERIFY(std::isfinite(dt) && dt > 0.0,
-                 "no stable time step: every point is debris or at rest without a sound speed, or the model is empty");
-  return settings_.cfl * dt;
+  const double bound = settings_.debris_contact ? contact_.stepBound() : std::numeric_limits<double>::infinity();
+  return kessler::stableStep(model_.points, volume_rate_, bound, settings_.cfl,
+                             [&](LocalIndex p) { return stepLength(model_, p); });
 }
 
 Energies Integrator::energies() const {

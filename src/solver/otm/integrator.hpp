@@ -4,27 +4,25 @@
 // Euler-Lagrange update of node positions, material points carried by the nodes' motion,
 // constitutive update, new neighbourhoods and shape functions, CFL time step.
 #include "core/timer.hpp"
-#include "solver/common/energies.hpp"
-#include "solver/otm/debris.hpp"
+#include "solver/common/debris_contact.hpp"
 #include "solver/common/eigenerosion.hpp"
+#include "solver/common/energies.hpp"
+#include "solver/common/release.hpp"
+#include "solver/common/stable_step.hpp"
 #include "solver/otm/integrator_assembly.hpp"
 #include "solver/otm/model.hpp"
 #include "solver/otm/neighbourhoods.hpp"
-#include "solver/common/release.hpp"
 #include "solver/otm/settings.hpp"
 #include "solver/otm/volume_patch.hpp"
 
 namespace kessler::otm {
 
-// The smallest principal stretch of F (the square root of the smallest eigenvalue of F^T F): the
-// time step's length scale is the reference spacing times it.
-double smallestStretch(const Mat3& F);
-// That length of point p: h0 times the smallest principal stretch (a failed point: its current
-// spacing). Where that is below `flattened` times the point's current spacing, the spread of its own
-// support decides instead: the length is then at least `support_lengths` times the square root of the
-// smallest eigenvalue of the support's covariance sum_a N_a (x_a - x_p)(x_a - x_p)^T, at most the
-// spacing (docs/theory.md §4 step 7). The stable step is cfl times the smallest stepLength / c over
-// the points that are not debris.
+// The length scale of point p for the stable step (solver/common/stable_step.hpp): h0 times the
+// smallest principal stretch of F (a failed point: its current spacing). Where that is below `flattened` times the
+// point's current spacing, the spread of its own support decides instead: the length is then at least `support_lengths`
+// times the square root of the smallest eigenvalue of the support's covariance sum_a N_a (x_a - x_p)(x_a - x_p)^T, at
+// most the spacing (docs/theory.md §4 step 7). The stable step is cfl times the smallest stepLength / c over the points
+// that are not debris.
 inline constexpr double flattened = 0.5;
 inline constexpr double support_lengths = 4.0;
 double stepLength(const Model& model, LocalIndex p);

@@ -4,7 +4,7 @@
 #include "core/error.hpp"
 #include "core/reduce.hpp"
 #include "core/timer.hpp"
-#include "solver/otm/debris.hpp"
+#include "solver/common/debris_contact.hpp"
 
 #include <omp.h>
 
@@ -93,29 +93,16 @@ int Neighbourhoods::gather(const Model& model, LocalIndex p, double scale, bool 
   const double contact2 = settings_.contact_distance * settings_.contact_distance * h * h;
   double radius = scale * (h * cutoff_per_spacing_);
   for (int attempt = 0;; ++attempt) {
-    // Seizing contact: another body's nodes count only once that body is close enough, so they
-    // are dropped again below unless their body's nearest node lies within the contact distance.
-    std::fill(s.nearest_foreign.begin(), s.nearest_foreign.end(), std::numeric_limits<double>::infinity());
-    bool foreign = false;
+    // Seizing contact (solver/common/contact.hpp): another body's nodes count only once that
+    // body's nearest node lies within the contact distance.
+    s.contact.start();
     s.node.clear();
     cells_.forEachWithin(points.x[p], radius, [&](LocalIndex a, double d2) {
-      const int b = nodes.body[a];
-      if (b != own) {
-        foreign = true;
-        s.nearest_foreign[b] = std::min(s.nearest_foreign[b], d2);
-      }
+      s.contact.see(own, nodes.body[a], d2);
       s.node.push_back(a);
     });
-    if (foreign)
-      s.node.erase(std::remove_if(s.node.begin(), s.node.end(),
-                                  [&](LocalIndex a) {
-                                    return nodes.body[a] != own && s.nearest_foreign[nodes.body[a]] > contact2;
-                                  }),
-                   s.node.end());
+    s.contact.settle(s.node, nodes.body, own, contact2);
     s.visible = s.node.size();
-    if (s.touching.size() == model.bodies.size())
-      for (std::size_t b = 0; b < s.touching.size(); ++b)
-        if (s.nearest_foreign[b] <= contact2) s.touching[static_cast<std::size_t>(own)] |= std::uint64_t{1} << b;
     if (visibility) {
       collectOccluders(points.x[p], own, radius, s);
       if (!s.occluders.empty()) {
@@ -316,10 +303,8 @@ void Neighbourhoods::update(Model& model) {
   {
     const int t = omp_get_thread_num();
     Scratch& s = scratch_[static_cast<std::size_t>(t)];
-    s.nearest_foreign.resize(bodies);
+    s.contact.reset(bodies);
     s.retry.clear();
-    // Contacts are recorded for the bodies debris contact can tell apart (one bit each).
-    s.touching.assign(bodies <= max_debris_bodies ? bodies : 0, 0);
     // Chunks of points, dynamically scheduled (points near cracks cost more: the visibility
     // test); a chunk's node lists go to the searching thread's rows, in point order, and the
     // chunk remembers which thread and where.
@@ -330,7 +315,7 @@ void Neighbourhoods::update(Model& model) {
       chunk_start_[c] = s.rows.size();
       const LocalIndex end = std::min<LocalIndex>(np, (c + 1) * chunk);
       for (LocalIndex p = c * chunk; p < end; ++p) {
-        // Debris has no row (solver/otm/debris.hpp); failed points search as intact ones.
+        // Debris has no row (solver/common/debris_contact.hpp); failed points search as intact ones.
         if (points.debris(p)) {
           s.node.clear();
           count_[p] = visible_[p] = 0;
@@ -383,12 +368,9 @@ void Neighbourhoods::update(Model& model) {
     shape_time = std::max(shape_time, my_shape_time);
   }
   retryPoints(model);
-  if (bodies <= max_debris_bodies) {
-    std::vector<std::uint64_t> touching(bodies, 0);
-    for (const Scratch& s : scratch_)
-      for (std::size_t b = 0; b < bodies; ++b) touching[b] |= s.touching[b];
-    recordContacts(model, touching);
-  }
+  std::vector<std::uint64_t> touching(bodies, 0);
+  for (const Scratch& s : scratch_) s.contact.addTouching(touching);
+  recordContacts(model, touching);
   conn.buildTranspose(nodes.size(), transpose_scratch_);
   const double total = watch.seconds();
   shape_seconds_ = shape_time;

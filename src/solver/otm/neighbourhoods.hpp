@@ -5,6 +5,7 @@
 // thread count.
 #include "approx/lme.hpp"
 #include "search/cell_list.hpp"
+#include "solver/common/contact.hpp"
 #include "solver/otm/model.hpp"
 #include "solver/otm/settings.hpp"
 
@@ -31,18 +32,17 @@ class Neighbourhoods {
 
  private:
   struct Scratch {
-    std::vector<LocalIndex> node;   // neighbours of the point being processed: visible first
-    std::size_t visible = 0;        // how many of them are visible
-    std::vector<LocalIndex> rows;   // neighbours of all points of this thread, in order
+    std::vector<LocalIndex> node;  // neighbours of the point being processed: visible first
+    std::size_t visible = 0;       // how many of them are visible
+    std::vector<LocalIndex> rows;  // neighbours of all points of this thread, in order
     // Points of this thread whose shape functions failed or are ill-conditioned, with the
     // smallest variance of their first attempt (lme::Result::covariance; -1 if it failed).
     std::vector<std::pair<LocalIndex, double>> retry;
-    std::vector<double> N;          // shape functions of retried points
+    std::vector<double> N;  // shape functions of retried points
     std::vector<Vec3> dN;
-    std::vector<double> nearest_foreign;  // squared distance per body
+    SeizingProbe contact;
     std::vector<Vec3> offsets;
-    std::vector<Vec3> occluders;          // eroded points near the point being processed
-    std::vector<std::uint64_t> touching;  // per body: bodies whose nodes its points took (contact)
+    std::vector<Vec3> occluders;  // eroded points near the point being processed
   };
 
   // Collects the neighbour nodes of point p within `scale` times its cut-off radius into
@@ -78,8 +78,8 @@ class Neighbourhoods {
   std::vector<int> chunk_thread_;         // per chunk of points: the thread that searched it
   std::vector<std::size_t> chunk_start_;  // and where its node lists start in that thread's rows
   std::vector<std::uint32_t> transpose_scratch_;
-  std::vector<double> spacing_;          // per point: its support size h this step (a cube root each)
-  double cutoff_per_spacing_ = 0.0;      // the LME cut-off radius over h (a logarithm and a root)
+  std::vector<double> spacing_;      // per point: its support size h this step (a cube root each)
+  double cutoff_per_spacing_ = 0.0;  // the LME cut-off radius over h (a logarithm and a root)
   double search_seconds_ = 0.0, shape_seconds_ = 0.0;
   LocalIndex torn_ = 0;
   double torn_mass_ = 0.0;

@@ -1,18 +1,11 @@
 #pragma once
 // Settings of the OTM integrator, filled from the deck (or by a verification problem).
 #include "solver/common/settings.hpp"
+#include "solver/common/walls.hpp"
 
 #include <vector>
 
 namespace kessler::otm {
-
-// A frictionless rigid wall, the plane x[axis] = position: nodes stay on the side `side`
-// (+1: x[axis] >= position, -1: x[axis] <= position) and slide freely along it.
-struct RigidWall {
-  int axis = 2;
-  double position = 0.0;
-  int side = 1;
-};
 
 // The deck's keys (the common ones and `solver.otm`, solver/common/settings.hpp) and what only
 // the verification problems set.

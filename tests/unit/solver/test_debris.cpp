@@ -1,4 +1,4 @@
-// Debris contact (solver/otm/debris.hpp): a block of debris (eroded points) flies onto a wall at
+// Debris contact (solver/common/debris_contact.hpp): a block of debris (eroded points) flies onto a wall at
 // rest. A wall the debris may hit stops it without letting it through: at 1 km/s the debris stays in
 // front of the wall, at 4 km/s it craters it; it is left slow (nearly inelastic), the wall takes its
 // momentum, the total momentum is exact, and kinetic + internal + stored energy is kept up to the
@@ -8,7 +8,7 @@
 #include "geometry/structured_mesh.hpp"
 #include "material/impact_material.hpp"
 #include "material/library.hpp"
-#include "solver/otm/debris.hpp"
+#include "solver/common/debris_contact.hpp"
 #include "solver/otm/integrator.hpp"
 #include "solver/otm/setup.hpp"
 

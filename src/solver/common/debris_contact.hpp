@@ -1,42 +1,43 @@
 #pragma once
 // Debris that strikes as matter (docs/theory.md §9). Debris (failed material released from its
 // body, solver/common/release.hpp) carries no stress and flies ballistically until it reaches the
-// nodes of a body it may hit. Then a contact force between it and each node it overlaps pushes it
+// carriers of a body it may hit (OTM: its nodes; a particle method: its particles). Then a contact
+// force between it and each carrier it overlaps pushes it
 // back: a spring whose stiffness is the two materials' bulk moduli in series over the debris' face,
 // so that a fragment striking a wall stops within about the time a wave takes to cross it and loads
 // the nodes it meets with about the acoustic pressure rho c v, and a critically damped dashpot that
-// makes the strike nearly inelastic (restitution e^-2), its dissipation heating the debris. The node
-// takes the opposite force, so momentum is exact; the springs' energy is booked as stored energy. The
+// makes the strike nearly inelastic (restitution e^-2), its dissipation heating the debris. The
+// carrier takes the opposite force, so momentum is exact; the springs' energy is booked as stored energy. The
 // contact only pushes: debris does not stick, and it does not pass through a wall it cannot perforate.
 // It may not hit its own body, nor a body its body was in contact with when it was released: the
 // debris of a projectile breaking up in a bumper passes through the bumper's hole, and the rear
 // wall behind is struck by the debris cloud.
 #include "search/cell_list.hpp"
-#include "solver/otm/model.hpp"
+#include "solver/common/contact.hpp"
+#include "solver/common/particle_state.hpp"
 
 #include <limits>
 #include <span>
 #include <vector>
 
-namespace kessler::otm {
+namespace kessler {
 
-// Debris contact needs one bit per body; a model with more bodies keeps all debris ballistic.
-constexpr std::size_t max_debris_bodies = 64;
-
-// Marks the points released as debris since the last call (passes_through still 0) with the
-// bodies they pass through: those their body has touched so far (BodyInfo::touched).
-void markNewDebris(Model& model);
-
-// Adds the contacts seen by a neighbour search to BodyInfo::touched, both ways: touching[a] has
-// bit b set if nodes of body b lie in the rows of intact points of body a.
-void recordContacts(Model& model, std::span<const std::uint64_t> touching);
+// What debris strikes: the carriers of the bodies' motion, and where their contact forces go.
+struct Carriers {
+  std::span<const Vec3> x;
+  std::span<const Vec3> momentum;  // their velocity is momentum / mass
+  std::span<const double> mass;
+  std::span<const int> body;
+  std::span<Vec3> force;  // the contact forces are added to these
+  LocalIndex owned = 0;   // the first `owned` are this process's own
+};
 
 class DebrisContact {
  public:
-  // Adds the contact forces of this step's configuration to nodes.force (after the assembly) and
-  // gives each debris point in contact its velocity change dt_kick f / m and its dissipation as
-  // heat. dt_kick: the kick's interval of the step (the nodes' leapfrog).
-  void apply(Model& model, double dt_kick);
+  // Adds the contact forces of this step's configuration to carriers.force (after the assembly)
+  // and gives each debris point in contact its velocity change dt_kick f / m and its dissipation
+  // as heat. dt_kick: the kick's interval of the step (the carriers' leapfrog).
+  void apply(ParticleState& state, const Carriers& carriers, double dt_kick);
 
   // The energy the contact springs store in the configuration apply() last saw, J.
   double storedEnergy() const { return stored_; }
@@ -77,4 +78,4 @@ class DebrisContact {
   double step_bound_ = std::numeric_limits<double>::infinity();
 };
 
-}  // namespace kessler::otm
+}  // namespace kessler

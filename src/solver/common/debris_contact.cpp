@@ -1,4 +1,4 @@
-#include "solver/otm/debris.hpp"
+#include "solver/common/debris_contact.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,13 +6,9 @@
 #include <limits>
 #include <vector>
 
-namespace kessler::otm {
+namespace kessler {
 
 namespace {
-
-std::uint64_t bodyBit(int body) {
-  return std::uint64_t{1} << body;
-}
 
 // Critical damping of each pair: a linear spring-dashpot with zeta = 1 whose force may only push
 // lets go at t = 2 / omega with e^-2 of the approach speed (restitution 0.14).
@@ -32,39 +28,14 @@ double stiffness(double h_a, double modulus_a, double h_b, double modulus_b) {
 
 }  // namespace
 
-void markNewDebris(Model& model) {
+void DebrisContact::apply(ParticleState& model, const Carriers& nodes, double dt_kick) {
   PointStore& points = model.points;
-  const bool contact = model.bodies.size() <= max_debris_bodies;
-  for (LocalIndex p = 0; p < points.owned; ++p) {
-    if (!points.debris(p) || points.passes_through[p] != 0) continue;
-    const BodyInfo& body = model.bodies[static_cast<std::size_t>(points.body[p])];
-    const std::uint64_t bits = contact ? bodyBit(points.body[p]) | body.touched : ~std::uint64_t{0};
-    points.passes_through[p] = static_cast<std::int64_t>(bits);
-  }
-}
-
-void recordContacts(Model& model, std::span<const std::uint64_t> touching) {
-  const std::size_t bodies = model.bodies.size();
-  if (bodies > max_debris_bodies) return;
-  for (std::size_t a = 0; a < bodies; ++a) {
-    model.bodies[a].touched |= bodyBit(static_cast<int>(a));
-    for (std::size_t b = 0; b < bodies; ++b)
-      if ((touching[a] >> b) & 1u) {
-        model.bodies[a].touched |= bodyBit(static_cast<int>(b));
-        model.bodies[b].touched |= bodyBit(static_cast<int>(a));
-      }
-  }
-}
-
-void DebrisContact::apply(Model& model, double dt_kick) {
-  PointStore& points = model.points;
-  NodeStore& nodes = model.nodes;
   stored_ = 0.0;
   step_bound_ = std::numeric_limits<double>::infinity();
   const std::size_t bodies = model.bodies.size();
-  if (bodies > max_debris_bodies) return;
+  if (bodies > max_contact_bodies) return;
   const std::uint64_t every_body =
-      bodies == max_debris_bodies ? ~std::uint64_t{0} : (bodyBit(static_cast<int>(bodies)) - 1);
+      bodies == max_contact_bodies ? ~std::uint64_t{0} : (bodyBit(static_cast<int>(bodies)) - 1);
   // Debris in flight that some body may stop (passes_through is 0 until markNewDebris).
   auto flying = [&](LocalIndex p) {
     const auto passes = static_cast<std::uint64_t>(points.passes_through[p]);
@@ -98,10 +69,10 @@ void DebrisContact::apply(Model& model, double dt_kick) {
       if (count[b] > 0.0) body_node_mass_[b] /= count[b];
   }
   const double largest = *std::max_element(body_spacing_.begin(), body_spacing_.end());
-  cells_.build(nodes.x, nodes.size(), std::max(largest, 1e-300));
-  node_pairs_.resize(static_cast<std::size_t>(nodes.size()), 0);
-  node_dv_.resize(static_cast<std::size_t>(nodes.size()), Vec3::Zero());
-  node_stiffness_.resize(static_cast<std::size_t>(nodes.size()), 0.0);
+  cells_.build(nodes.x, static_cast<LocalIndex>(nodes.x.size()), std::max(largest, 1e-300));
+  node_pairs_.resize(nodes.x.size(), 0);
+  node_dv_.resize(nodes.x.size(), Vec3::Zero());
+  node_stiffness_.resize(nodes.x.size(), 0.0);
   touched_.clear();
 
   // The pairs of every flying debris point first, so that each node knows how many it has.
@@ -208,4 +179,4 @@ void DebrisContact::apply(Model& model, double dt_kick) {
   }
 }
 
-}  // namespace kessler::otm
+}  // namespace kessler
