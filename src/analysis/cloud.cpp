@@ -27,14 +27,13 @@ std::vector<CloudSample> cloudSamples(const ParticleState& model, const std::vec
                                       const Mirror& mirror) {
   std::vector<CloudSample> samples;
   for (const int b : bodies) {
-    const BodyInfo& body = model.bodies[b];
-    for (LocalIndex p = body.point_begin; p < body.point_end; ++p) {
+    forEachPointOf(model.points, b, [&](LocalIndex p) {
       for (int mask = 0; mask < mirror.images(); ++mask) {
         const Vec3 x = mirror.image(model.points.x[p], mask);
         if (ref.normal.dot(x) > ref.rear_face)
           samples.push_back({x, mirror.image(model.points.v[p], mask), model.points.mass[p], mask == 0});
       }
-    }
+    });
   }
   return samples;
 }

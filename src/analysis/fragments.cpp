@@ -128,8 +128,30 @@ Shape3 characteristicLength(const std::vector<Vec3>& positions, const std::vecto
   return shape;
 }
 
+namespace {
+
+// The links between the store's points (model.adjacency holds ids), each pair ordered; a link to
+// a point the store does not hold has -1 at that end.
+std::vector<std::array<LocalIndex, 2>> localLinks(const ParticleState& model) {
+  const std::vector<LocalIndex> index = indexById(model.points);
+  auto local = [&](Index id) {
+    return id >= 0 && static_cast<std::size_t>(id) < index.size() ? index[static_cast<std::size_t>(id)] : -1;
+  };
+  std::vector<std::array<LocalIndex, 2>> links(model.adjacency.size());
+  for (std::size_t k = 0; k < links.size(); ++k) {
+    const LocalIndex a = local(model.adjacency[k][0]), b = local(model.adjacency[k][1]);
+    links[k] =
+        a < 0 || b < 0 ? std::array<LocalIndex, 2>{-1, -1} : std::array<LocalIndex, 2>{std::min(a, b), std::max(a, b)};
+  }
+  return links;
+}
+
+}  // namespace
+
 std::vector<double> referenceLinkLengths(const ParticleState& model) {
-  const auto& links = model.adjacency;
+  const std::vector<std::array<LocalIndex, 2>> links = localLinks(model);
+  KESSLER_VERIFY(std::none_of(links.begin(), links.end(), [](const auto& l) { return l[0] < 0; }),
+                 "fragments: a link joins a point outside the model");
   std::vector<double> lengths(links.size());
   const auto n = static_cast<std::ptrdiff_t>(links.size());
 #pragma omp parallel for schedule(static)
@@ -142,7 +164,7 @@ FragmentSet findFragments(const ParticleState& model, const std::vector<double>&
                           const FragmentOptions& options) {
   const PointStore& points = model.points;
   const LocalIndex n = points.size();
-  const auto& links = model.adjacency;
+  const std::vector<std::array<LocalIndex, 2>> links = localLinks(model);
   KESSLER_VERIFY(options.link_stretch > 1.0, "fragments: link stretch {} must exceed 1", options.link_stretch);
   KESSLER_VERIFY(reference_lengths.empty() || reference_lengths.size() == links.size(),
                  "fragments: {} reference link lengths for {} links", reference_lengths.size(), links.size());

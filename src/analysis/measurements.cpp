@@ -10,27 +10,22 @@
 namespace kessler::analysis {
 namespace {
 
-const BodyInfo& bodyOf(const ParticleState& model, const PlateSpec& plate) {
-  return model.bodies[plate.body];
-}
-
 // The material of a plate projected onto its plane, every mirror image included: `slab_only`
 // keeps the points inside the original thickness slab; `keep` selects the points (intact, of
 // the wall's largest fragment, ...).
 template <class Keep>
 std::vector<Vec2> projectPlate(const ParticleState& model, const PlateSpec& plate, const PlaneFrame& frame,
                                const Mirror& mirror, bool slab_only, const Keep& keep) {
-  const BodyInfo& body = bodyOf(model, plate);
   std::vector<Vec2> projected;
-  for (LocalIndex p = body.point_begin; p < body.point_end; ++p) {
-    if (!keep(p)) continue;
+  forEachPointOf(model.points, plate.body, [&](LocalIndex p) {
+    if (!keep(p)) return;
     for (int mask = 0; mask < mirror.images(); ++mask) {
       const Vec3 x = mirror.image(model.points.x[p], mask);
       const double s = frame.normal.dot(x);
       if (slab_only && (s < plate.frontFace() || s > plate.rear_face)) continue;
       projected.push_back(frame.project(x));
     }
-  }
+  });
   return projected;
 }
 
@@ -91,11 +86,14 @@ namespace {
 
 // The mean initial spacing of a plate's points.
 double meanSpacing(const ParticleState& model, const PlateSpec& plate) {
-  const BodyInfo& body = bodyOf(model, plate);
-  KESSLER_VERIFY(body.point_end > body.point_begin, "plate '{}' has no points", body.name);
   double sum = 0.0;
-  for (LocalIndex p = body.point_begin; p < body.point_end; ++p) sum += model.points.spacing0[p];
-  return sum / (body.point_end - body.point_begin);
+  LocalIndex count = 0;
+  forEachPointOf(model.points, plate.body, [&](LocalIndex p) {
+    sum += model.points.spacing0[p];
+    ++count;
+  });
+  KESSLER_VERIFY(count > 0, "plate '{}' has no points", model.bodies[plate.body].name);
+  return sum / count;
 }
 
 }  // namespace
@@ -157,10 +155,10 @@ RearWallDamage measureRearWall(const ParticleState& model, const FragmentSet& fr
   for (LocalIndex p = 0; p < model.points.owned; ++p)
     if (model.points.debris(p) && model.points.lastStruck(p) == plate.body)
       damage.debris_struck += model.points.mass[p] * mirror.images();
-  const BodyInfo& body = bodyOf(model, plate);
-  for (LocalIndex p = body.point_begin; p < body.point_end; ++p)
+  forEachPointOf(model.points, plate.body, [&](LocalIndex p) {
     if (model.points.broken[p] && plate.normal.dot(model.points.x[p]) > plate.rear_face)
       damage.eroded_mass_behind += model.points.mass[p] * mirror.images();
+  });
 
   // Fragments are sorted by mass: the first of this body is the wall itself.
   LocalIndex wall = -1;
@@ -198,28 +196,29 @@ RearWallDamage measureRearWall(const ParticleState& model, const FragmentSet& fr
 
   // Bulge: the attached material's furthest reach behind the original rear face (its points start
   // a fraction of a spacing inside the face).
-  for (LocalIndex p = body.point_begin; p < body.point_end; ++p)
+  forEachPointOf(model.points, plate.body, [&](LocalIndex p) {
     if (attached(p)) damage.bulge = std::max(damage.bulge, plate.normal.dot(model.points.x[p]) - plate.rear_face);
+  });
   // Incipient spall: failed wall points (still in the wall) nearer the rear than the front of the
   // attached wall in their column (one raster cell), so that a crater in the front face of a bulged
   // wall does not count.
   const double infinity = std::numeric_limits<double>::infinity();
   std::vector<double> front(static_cast<std::size_t>(grid.nx()) * grid.ny(), infinity), rear(front.size(), -infinity);
-  for (LocalIndex p = body.point_begin; p < body.point_end; ++p) {
-    if (!attached(p)) continue;
+  forEachPointOf(model.points, plate.body, [&](LocalIndex p) {
+    if (!attached(p)) return;
     const int k = grid.cellOf(frame.project(model.points.x[p]));
-    if (k < 0) continue;
+    if (k < 0) return;
     const double s = plate.normal.dot(model.points.x[p]);
     front[k] = std::min(front[k], s);
     rear[k] = std::max(rear[k], s);
-  }
-  for (LocalIndex p = body.point_begin; p < body.point_end; ++p) {
-    if (!model.points.failed(p)) continue;
+  });
+  forEachPointOf(model.points, plate.body, [&](LocalIndex p) {
+    if (!model.points.failed(p)) return;
     const int k = grid.cellOf(frame.project(model.points.x[p]));
-    if (k < 0 || !(rear[k] > front[k])) continue;
+    if (k < 0 || !(rear[k] > front[k])) return;
     if (plate.normal.dot(model.points.x[p]) > 0.5 * (front[k] + rear[k]))
       damage.incipient_mass += model.points.mass[p] * mirror.images();
-  }
+  });
 
   if (damage.perforations > 0)
     damage.classification = "perforation";

@@ -10,9 +10,8 @@ namespace kessler::analysis {
 namespace {
 
 double bodyMass(const ParticleState& model, int b) {
-  const BodyInfo& body = model.bodies[b];
   double mass = 0.0;
-  for (LocalIndex p = body.point_begin; p < body.point_end; ++p) mass += model.points.mass[p];
+  forEachPointOf(model.points, b, [&](LocalIndex p) { mass += model.points.mass[p]; });
   return mass;
 }
 

@@ -16,7 +16,10 @@ namespace kessler::io {
 namespace {
 
 // Bumped whenever the layout changes; an older or newer checkpoint is refused with a message.
-constexpr std::int64_t format_version = 5;
+// 6: bodies are identified by their points' `body` alone (format 5 also stored each body's point and
+// node ranges, which this reader ignores), and the links by point id (format 5: by index in the
+// store, which this reader turns into ids).
+constexpr std::int64_t format_version = 6, oldest_format_read = 5;
 
 // Vec3 and Mat3 are stored as runs of 3 and 9 doubles, straight from the store.
 static_assert(sizeof(Vec3) == 3 * sizeof(double));
@@ -38,20 +41,28 @@ struct Layout<std::array<LocalIndex, 2>> {
   static constexpr hsize_t components = 2;
 };
 template <>
+struct Layout<std::array<Index, 2>> {
+  using Scalar = Index;
+  static constexpr hsize_t components = 2;
+};
+template <>
 struct Layout<Mat3> {
   using Scalar = double;
   static constexpr hsize_t components = 9;
 };
 
+// The first `count` values (all by default).
 template <class T>
-void writeArray(Hdf5Writer& h5, const std::string& name, const std::vector<T>& values) {
+void writeArray(Hdf5Writer& h5, const std::string& name, const std::vector<T>& values,
+                std::size_t count = static_cast<std::size_t>(-1)) {
   using Scalar = typename Layout<T>::Scalar;
   constexpr hsize_t c = Layout<T>::components;
-  const std::span<const Scalar> flat(reinterpret_cast<const Scalar*>(values.data()), values.size() * c);
+  const std::size_t n = std::min(count, values.size());
+  const std::span<const Scalar> flat(reinterpret_cast<const Scalar*>(values.data()), n * c);
   if constexpr (c == 1)
-    h5.writeDataset(name, flat, {values.size()});
+    h5.writeDataset(name, flat, {n});
   else
-    h5.writeDataset(name, flat, {values.size(), c});
+    h5.writeDataset(name, flat, {n, c});
 }
 
 template <class T>
@@ -106,9 +117,6 @@ std::vector<HistoryRow> readHistoryRows(const Hdf5Reader& h5) {
 void checkConsistency(const Hdf5Reader& h5, const ParticleState& state) {
   const PointStore& points = state.points;
   const auto bodies = static_cast<std::int32_t>(state.bodies.size());
-  for (const BodyInfo& b : state.bodies)
-    if (b.point_begin < 0 || b.point_begin > b.point_end || b.point_end > points.size())
-      h5.fail(fmt::format("use body '{}': its point range does not fit the store", b.name));
   for (LocalIndex p = 0; p < points.size(); ++p)
     if (points.body[p] < 0 || points.body[p] >= bodies) h5.fail(fmt::format("use point {}: no such body", p));
 }
@@ -188,11 +196,12 @@ void writeCheckpoint(const std::filesystem::path& file, const Method& method, co
   h5.writeAttribute("run_outputs", static_cast<std::int64_t>(loop.outputs));
   h5.writeAttribute("points_owned", static_cast<std::int64_t>(model.points.owned));
 
+  // The owned points: ghosts (copies of other processes' points) are the method's to rebuild.
   h5.createGroup("/points");
   PointStore::fields(model.points, [&](const char* name, const auto& values, const auto&) {
     KESSLER_VERIFY(values.size() == model.points.x.size(), "checkpoint: points.{} has {} values for {} points", name,
                    values.size(), model.points.x.size());
-    writeArray(h5, fmt::format("/points/{}", name), values);
+    writeArray(h5, fmt::format("/points/{}", name), values, static_cast<std::size_t>(model.points.owned));
   });
   // Fragment links (analysis): the initial mesh adjacency and its lengths, which a restarted run
   // could not rebuild from the deformed state.
@@ -220,9 +229,9 @@ Restored readCheckpoint(const std::filesystem::path& file, const std::vector<Mat
   } catch (const Error&) {
     throw Error(fmt::format("'{}' is not a Kessler checkpoint", file.string()));
   }
-  if (version != format_version)
-    throw Error(fmt::format("'{}' is a checkpoint of format {}, this Kessler reads format {}", file.string(), version,
-                            format_version));
+  if (version < oldest_format_read || version > format_version)
+    throw Error(fmt::format("'{}' is a checkpoint of format {}, this Kessler reads formats {} to {}", file.string(),
+                            version, oldest_format_read, format_version));
   const Hdf5StateReader own(h5);
   Restored r;
   RunLoopState& loop = r.loop;
@@ -242,12 +251,27 @@ Restored readCheckpoint(const std::filesystem::path& file, const std::vector<Mat
     h5.fail("use the points: the owned count differs from the stored size");
 
   const std::size_t links = own.length("/adjacency/pairs");
-  readArray(h5, "/adjacency/pairs", model.adjacency, links);
+  if (version == 5) {
+    // Format 5 stored the links by index in the store: they become the points' ids.
+    std::vector<std::array<LocalIndex, 2>> by_index;
+    readArray(h5, "/adjacency/pairs", by_index, links);
+    model.adjacency.reserve(links);
+    for (const auto& [i, j] : by_index) {
+      if (i < 0 || i >= j || j >= model.points.size())
+        h5.fail(fmt::format("use /adjacency/pairs: pair ({}, {}) is not two ordered points of {}", i, j,
+                            model.points.size()));
+      const Index a = model.points.id[static_cast<std::size_t>(i)], b = model.points.id[static_cast<std::size_t>(j)];
+      model.adjacency.push_back({std::min(a, b), std::max(a, b)});
+    }
+  } else {
+    readArray(h5, "/adjacency/pairs", model.adjacency, links);
+  }
   readArray(h5, "/adjacency/length0", model.adjacency_length0, links);
+  const std::vector<LocalIndex> index = indexById(model.points);
   for (const auto& [i, j] : model.adjacency)
-    if (i < 0 || i >= j || j >= model.points.size())
-      h5.fail(fmt::format("use /adjacency/pairs: pair ({}, {}) is not two ordered points of {}", i, j,
-                          model.points.size()));
+    if (i < 0 || i >= j || static_cast<std::size_t>(j) >= index.size() || index[static_cast<std::size_t>(i)] < 0 ||
+        index[static_cast<std::size_t>(j)] < 0)
+      h5.fail(fmt::format("use /adjacency/pairs: pair ({}, {}) is not two ordered ids of stored points", i, j));
 
   const std::vector<std::uint8_t> meta = h5.read<std::uint8_t>("/run/meta");
   readCheckpointMeta(std::string(meta.begin(), meta.end()), file, materials, model, loop);

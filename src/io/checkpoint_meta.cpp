@@ -58,13 +58,7 @@ std::vector<XdmfGrid> gridsFrom(const json& all) {
 std::string checkpointMetaText(const ParticleState& model, const RunLoopState& loop) {
   json bodies = json::array();
   for (const BodyInfo& b : model.bodies)
-    bodies.push_back({{"name", b.name},
-                      {"material", b.material},
-                      {"point_begin", b.point_begin},
-                      {"point_end", b.point_end},
-                      {"node_begin", b.node_begin},
-                      {"node_end", b.node_end},
-                      {"touched", b.touched}});
+    bodies.push_back({{"name", b.name}, {"material", b.material}, {"touched", b.touched}});
   json materials = json::array();
   for (const MaterialPtr& m : model.materials) materials.push_back(m->name());
   const json meta = {{"bodies", bodies},
@@ -88,10 +82,7 @@ void readCheckpointMeta(const std::string& text, const std::filesystem::path& fi
       model.materials.push_back(*found);
     }
     for (const json& b : meta.at("bodies")) {
-      BodyInfo body{b.at("name").get<std::string>(),       b.at("material").get<int>(),
-                    b.at("point_begin").get<LocalIndex>(), b.at("point_end").get<LocalIndex>(),
-                    b.at("node_begin").get<LocalIndex>(),  b.at("node_end").get<LocalIndex>(),
-                    b.at("touched").get<std::uint64_t>()};
+      BodyInfo body{b.at("name").get<std::string>(), b.at("material").get<int>(), b.at("touched").get<std::uint64_t>()};
       if (body.material < 0 || static_cast<std::size_t>(body.material) >= model.materials.size())
         throw Error(fmt::format("checkpoint '{}': body '{}' names no stored material", file.string(), body.name));
       model.bodies.push_back(std::move(body));

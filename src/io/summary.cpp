@@ -26,19 +26,27 @@ nlohmann::json energiesJson(const Energies& e) {
 void writeSummary(const std::filesystem::path& file, const RunRecord& record, const Method& method) {
   const ParticleState& model = method.state();
   const Clock clock = method.clock();
+  // Per body, in point order (the sums of a body are those of its points in store order).
+  const std::size_t nb = model.bodies.size();
+  std::vector<double> mass(nb, 0.0), volume(nb, 0.0);
+  std::vector<long> points(nb, 0), nodes(nb, 0);
+  for (LocalIndex p = 0; p < model.points.owned; ++p) {
+    const auto b = static_cast<std::size_t>(model.points.body[p]);
+    mass[b] += model.points.mass[p];
+    volume[b] += model.points.volume0[p];
+    ++points[b];
+  }
+  const NodeStore& node_store = method.nodes();
+  for (LocalIndex a = 0; a < node_store.owned; ++a) ++nodes[static_cast<std::size_t>(node_store.body[a])];
   nlohmann::json bodies = nlohmann::json::array();
-  for (const BodyInfo& body : model.bodies) {
-    double mass = 0.0, volume = 0.0;
-    for (LocalIndex p = body.point_begin; p < body.point_end; ++p) {
-      mass += model.points.mass[p];
-      volume += model.points.volume0[p];
-    }
+  for (std::size_t b = 0; b < nb; ++b) {
+    const BodyInfo& body = model.bodies[b];
     bodies.push_back({{"name", body.name},
                       {"material", model.materials[body.material]->name()},
-                      {"points", body.point_end - body.point_begin},
-                      {"nodes", body.node_end - body.node_begin},
-                      {"mass_kg", mass},
-                      {"volume_m3", volume}});
+                      {"points", points[b]},
+                      {"nodes", nodes[b]},
+                      {"mass_kg", mass[b]},
+                      {"volume_m3", volume[b]}});
   }
   const double point_steps = static_cast<double>(clock.steps) * model.points.owned;
   nlohmann::json timings = nlohmann::json::object();

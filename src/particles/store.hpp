@@ -1,13 +1,15 @@
 #pragma once
 // The particle store: structure-of-arrays for nodes and material points (docs/theory.md §1).
-// Points are stored grouped by body so that each body is one contiguous range and a
-// material law runs over a whole range at once. Loops run over the owned ranges
-// [0, owned) so that MPI ghosts can be appended behind them later.
+// Each point and node names its body (`body`); a body is the set of entries that name it, wherever
+// they sit. A method may keep each body's entries together (OTM does, so that a material law runs
+// over a whole range at once: bodyRanges). Loops run over the owned entries [0, owned), so that
+// copies of other processes' entries (ghosts) can sit behind them.
 // Each store declares its arrays once, in fields(): resize, permutation and the checkpoint all
 // visit that list, so a new array is added there and nowhere else.
 #include "core/types.hpp"
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -141,15 +143,35 @@ struct PointStore {
   double spacing(LocalIndex p) const;
 };
 
-// A body: a contiguous range of points and of nodes, one material.
+// A body: a name and one material. Its points (and a method's nodes) are those whose `body` is its
+// index, wherever they sit in the store: a process holds any subset, in any order.
 struct BodyInfo {
   std::string name;
   int material = 0;
-  LocalIndex point_begin = 0, point_end = 0;
-  LocalIndex node_begin = 0, node_end = 0;
   // Bodies it has been in contact with so far, its own included (bit b: body b; the first 64
   // bodies): what its debris passes through (solver/common/debris_contact.hpp).
   std::uint64_t touched = 0;
 };
+
+// Calls f(p) for each owned point of body `body`, in store order.
+template <class F>
+void forEachPointOf(const PointStore& points, int body, F&& f) {
+  for (LocalIndex p = 0; p < points.owned; ++p)
+    if (points.body[p] == body) f(p);
+}
+
+// The index of each point id among the store's points (all of them, ghosts included): entry `id`
+// holds its index, -1 for an id the store does not hold. Sized by the largest id.
+std::vector<LocalIndex> indexById(const PointStore& points);
+
+// Entries [begin, end) of a store.
+struct IndexRange {
+  LocalIndex begin = 0, end = 0;
+};
+
+// The range each body's entries take among the first `count` of `body`, for a method that keeps
+// each body's entries together (OTM, which updates materials body by body): ranges[b] is empty
+// for a body without entries. Throws naming the entry if a body's entries are not contiguous.
+std::vector<IndexRange> bodyRanges(std::span<const std::int32_t> body, LocalIndex count, std::size_t bodies);
 
 }  // namespace kessler

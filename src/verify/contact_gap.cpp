@@ -29,20 +29,20 @@ Outcome contactGap() {
   otm::Integrator integrator(model, settings);
   integrator.initialise();
 
-  const BodyInfo& cube = model.bodies[static_cast<std::size_t>(a)];
-  const BodyInfo& block = model.bodies[static_cast<std::size_t>(b)];
   double h_max = 0.0;
   for (LocalIndex p = 0; p < model.points.owned; ++p) h_max = std::max(h_max, model.points.spacing(p));
   const double coupling = settings.contact_distance * h_max;
   auto surfaceGap = [&] {
     double front = -std::numeric_limits<double>::infinity(), back = std::numeric_limits<double>::infinity();
-    for (LocalIndex n = cube.node_begin; n < cube.node_end; ++n) front = std::max(front, model.nodes.x[n][0]);
-    for (LocalIndex n = block.node_begin; n < block.node_end; ++n) back = std::min(back, model.nodes.x[n][0]);
+    for (LocalIndex n = 0; n < model.nodes.owned; ++n) {
+      if (model.nodes.body[n] == a) front = std::max(front, model.nodes.x[n][0]);
+      if (model.nodes.body[n] == b) back = std::min(back, model.nodes.x[n][0]);
+    }
     return back - front;
   };
   auto blockMoves = [&] {
-    for (LocalIndex p = block.point_begin; p < block.point_end; ++p)
-      if (model.points.v[p] != Vec3::Zero()) return true;
+    for (LocalIndex p = 0; p < model.points.owned; ++p)
+      if (model.points.body[p] == b && model.points.v[p] != Vec3::Zero()) return true;
     return false;
   };
 

@@ -33,15 +33,14 @@ struct Profile {
 Profile measure(const otm::Model& model, int target_body) {
   const int slabs = target_cells;
   std::vector<double> mass(slabs, 0.0), momentum(slabs, 0.0), pressure(slabs, 0.0), energy(slabs, 0.0);
-  const BodyInfo& body = model.bodies[target_body];
-  for (LocalIndex p = body.point_begin; p < body.point_end; ++p) {
+  forEachPointOf(model.points, target_body, [&](LocalIndex p) {
     const int s = std::clamp(static_cast<int>(model.points.x[p][2] / cell), 0, slabs - 1);
     const double m = model.points.mass[p];
     mass[s] += m;
     momentum[s] += m * model.points.v[p][2];
     pressure[s] += m * (-model.points.stress[p].trace() / 3.0 - model.points.viscous_pressure[p]);
     energy[s] += m * model.points.energy[p];
-  }
+  });
   // Front: the last slab (from the far end) whose velocity exceeds half the maximum.
   double vmax = 0.0;
   for (int s = 0; s < slabs; ++s) vmax = std::max(vmax, momentum[s] / mass[s]);
@@ -122,9 +121,8 @@ FlyerPlateResult runFlyerPlate() {
   r.points = model.points.owned;
   // The shocked target only: the flyer's free rear face releases into tension after the shock
   // has crossed it (docs/validation.md), which is not what this problem checks.
-  const BodyInfo& shocked = model.bodies[static_cast<std::size_t>(target)];
-  r.eroded = std::count(model.points.broken.begin() + shocked.point_begin,
-                        model.points.broken.begin() + shocked.point_end, std::uint8_t{1});
+  r.eroded = 0;
+  forEachPointOf(model.points, target, [&](LocalIndex p) { r.eroded += model.points.broken[p] != 0; });
   return r;
 }
 

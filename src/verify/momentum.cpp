@@ -25,10 +25,8 @@ Outcome momentum() {
   integrator.initialise();
 
   auto bodyMomentum = [&](int body) {
-    const BodyInfo& info = model.bodies[body];
-    return deterministicSum(info.point_end - info.point_begin, Vec3(Vec3::Zero()), [&](LocalIndex i) -> Vec3 {
-      const LocalIndex p = info.point_begin + i;
-      return model.points.mass[p] * model.points.v[p];
+    return deterministicSum(model.points.owned, Vec3(Vec3::Zero()), [&](LocalIndex p) -> Vec3 {
+      return model.points.body[p] == body ? Vec3(model.points.mass[p] * model.points.v[p]) : Vec3(Vec3::Zero());
     });
   };
   const Vec3 p0 = integrator.energies().momentum;

@@ -61,7 +61,6 @@ SpallResult runSpall(double speed, double cell) {
     otm::constrainNode(model, a, 0);
     otm::constrainNode(model, a, 1);
   }
-  const BodyInfo& body = model.bodies[static_cast<std::size_t>(target)];
   std::vector<double> z0(model.points.x.size());  // initial heights by point id
   for (LocalIndex p = 0; p < model.points.size(); ++p)
     z0[static_cast<std::size_t>(model.points.id[p])] = model.points.x[p][2];
@@ -89,10 +88,10 @@ SpallResult runSpall(double speed, double cell) {
   std::vector<double> failed_at(model.points.x.size(), -1.0);
   while (!integrator.finished()) {
     integrator.step();
-    for (LocalIndex p = body.point_begin; p < body.point_end; ++p) {
+    forEachPointOf(model.points, target, [&](LocalIndex p) {
       const auto id = static_cast<std::size_t>(model.points.id[p]);
       if (model.points.broken[p] && failed_at[id] < 0.0) failed_at[id] = integrator.time();
-    }
+    });
   }
 
   // The first spall: the points that failed within the time a release front takes to cross a cell
@@ -115,10 +114,8 @@ SpallResult runSpall(double speed, double cell) {
   }
   r.first_time = r.failed > 0 ? first : 0.0;
   r.first_height = r.first_failed > 0 ? sum / static_cast<double>(r.first_failed) : 0.0;
-  for (int b = 0; b < static_cast<int>(model.bodies.size()); ++b)
-    if (b != target)
-      for (LocalIndex p = model.bodies[b].point_begin; p < model.bodies[b].point_end; ++p)
-        r.flyer_failed += model.points.broken[p] != 0;
+  for (LocalIndex p = 0; p < model.points.owned; ++p)
+    if (model.points.body[p] != target) r.flyer_failed += model.points.broken[p] != 0;
   r.points = model.points.owned;
   r.steps = integrator.steps();
   return r;

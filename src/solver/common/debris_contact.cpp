@@ -49,19 +49,20 @@ void DebrisContact::apply(ParticleState& model, const Carriers& nodes, double dt
     // Each body's mean reference spacing and reference modulus: fixed for a run, found once.
     body_spacing_.assign(bodies, 0.0);
     body_modulus_.assign(bodies, 0.0);
+    std::vector<double> count(bodies, 0.0);
+    for (LocalIndex p = 0; p < points.owned; ++p) {
+      body_spacing_[static_cast<std::size_t>(points.body[p])] += points.spacing0[p];
+      count[static_cast<std::size_t>(points.body[p])] += 1.0;
+    }
     for (std::size_t b = 0; b < bodies; ++b) {
-      const BodyInfo& body = model.bodies[b];
-      const LocalIndex begin = body.point_begin, end = std::min(body.point_end, points.owned);
-      double sum = 0.0;
-      for (LocalIndex p = begin; p < end; ++p) sum += points.spacing0[p];
-      body_spacing_[b] = end > begin ? sum / static_cast<double>(end - begin) : 0.0;
-      const Material& material = *model.materials[static_cast<std::size_t>(body.material)];
+      if (count[b] > 0.0) body_spacing_[b] /= count[b];
+      const Material& material = *model.materials[static_cast<std::size_t>(model.bodies[b].material)];
       const double c = material.referenceSoundSpeed();
       body_modulus_[b] = material.referenceDensity() * c * c;
     }
     // And its mass per node (both constant, so a restarted run finds the same).
     body_node_mass_.assign(bodies, 0.0);
-    std::vector<double> count(bodies, 0.0);
+    count.assign(bodies, 0.0);
     for (LocalIndex a = 0; a < nodes.owned; ++a) count[static_cast<std::size_t>(nodes.body[a])] += 1.0;
     for (LocalIndex p = 0; p < points.owned; ++p)
       body_node_mass_[static_cast<std::size_t>(points.body[p])] += points.mass[p];

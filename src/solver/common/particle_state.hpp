@@ -15,9 +15,10 @@ struct ParticleState {
   PointStore points;
   std::vector<BodyInfo> bodies;
   std::vector<MaterialPtr> materials;  // indexed by BodyInfo::material
-  // Pairs of points (global indices, i < j) whose initial tets share a face; fragments are the
-  // connected components of intact material over these links (analysis/fragments.hpp).
-  std::vector<std::array<LocalIndex, 2>> adjacency;
+  // Pairs of points whose initial tets share a face, by id (PointStore::id: the same on every
+  // process and in any order of the store), i < j; fragments are the connected components of
+  // intact material over these links (analysis/fragments.hpp).
+  std::vector<std::array<Index, 2>> adjacency;
   std::vector<double> adjacency_length0;  // initial distance of each pair, same order
 };
 

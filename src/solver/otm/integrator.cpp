@@ -32,9 +32,9 @@ void Integrator::initialise() {
   // Points and nodes in Morton order, once, before anything refers to their indices (the first
   // output and checkpoint already see this order, so a restart continues with it).
   sortForLocality(model_);
-  for (const BodyInfo& body : model_.bodies)
-    model_.materials[body.material]->initialise(model_.points, body.point_begin,
-                                                std::min(body.point_end, model_.points.owned));
+  findBodyRanges();
+  for (std::size_t b = 0; b < model_.bodies.size(); ++b)
+    model_.materials[model_.bodies[b].material]->initialise(model_.points, body_points_[b].begin, body_points_[b].end);
   {
     ScopedPhase phase(timers_, "constitutive");
     updateMaterials(0.0);
@@ -69,6 +69,13 @@ void Integrator::restore(const IntegratorState& state) {
   dt_initial_ = state.dt_initial;
   steps_ = state.steps;
   stabilisation_energy_ = state.stabilisation_energy;
+  findBodyRanges();
+}
+
+// The owned points of each body, together in the store (the Morton sort orders within bodies):
+// the materials update them body by body.
+void Integrator::findBodyRanges() {
+  body_points_ = bodyRanges(model_.points.body, model_.points.owned, model_.bodies.size());
 }
 
 void Integrator::step() {
@@ -263,10 +270,10 @@ void Integrator::balanceEnergy() {
 // Material::heat over each body's range of `heat` (J per point).
 void Integrator::heatPoints(const std::vector<double>& heat) {
   PointStore& points = model_.points;
-  for (const BodyInfo& body : model_.bodies) {
-    const LocalIndex begin = body.point_begin, end = std::min(body.point_end, points.owned);
+  for (std::size_t b = 0; b < model_.bodies.size(); ++b) {
+    const LocalIndex begin = body_points_[b].begin, end = body_points_[b].end;
     if (end > begin)
-      model_.materials[body.material]->heat(
+      model_.materials[model_.bodies[b].material]->heat(
           points, begin, end,
           std::span<const double>(heat).subspan(static_cast<std::size_t>(begin),
                                                 static_cast<std::size_t>(end - begin)));
@@ -282,10 +289,8 @@ void Integrator::updateMaterials(double dt) {
     for (LocalIndex p = 0; p < points.owned; ++p) force_work_[p] += points.mass[p] * points.energy[p];
   }
   try {
-    for (const BodyInfo& body : model_.bodies) {
-      const LocalIndex begin = body.point_begin, end = std::min(body.point_end, points.owned);
-      model_.materials[body.material]->update(points, begin, end, dt);
-    }
+    for (std::size_t b = 0; b < model_.bodies.size(); ++b)
+      model_.materials[model_.bodies[b].material]->update(points, body_points_[b].begin, body_points_[b].end, dt);
   } catch (const PointError& e) {
     failAtPoint(static_cast<LocalIndex>(e.point()), e.what());
   }

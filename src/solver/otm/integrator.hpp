@@ -78,6 +78,7 @@ class Integrator {
   void balanceEnergy();
   void heatPoints(const std::vector<double>& heat);
   double stableStep() const;
+  void findBodyRanges();
   [[noreturn]] void failAtPoint(LocalIndex p, const std::string& what) const;
 
   Model& model_;
@@ -112,7 +113,8 @@ class Integrator {
   double dt_initial_ = 0.0;
   long steps_ = 0;
   double stabilisation_energy_ = 0.0;
-  LocalIndex eroded_ = 0;  // points eigenerosion has failed so far
+  LocalIndex eroded_ = 0;                // points eigenerosion has failed so far
+  std::vector<IndexRange> body_points_;  // each body's owned points (findBodyRanges)
 };
 
 }  // namespace kessler::otm

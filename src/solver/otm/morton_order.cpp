@@ -54,20 +54,15 @@ void sortForLocality(Model& model) {
 
   std::vector<LocalIndex> order(static_cast<std::size_t>(points.size()));
   std::iota(order.begin(), order.end(), 0);
-  for (const BodyInfo& body : model.bodies) sortRange(points.x, body.point_begin, body.point_end, lo, hi, order);
+  for (const IndexRange& body : bodyRanges(points.body, points.size(), model.bodies.size()))
+    sortRange(points.x, body.begin, body.end, lo, hi, order);
   points.permute(order);
   model.lme_lambda.assign(order.size(), Vec3::Zero());  // before the first solve: no warm start yet
-  std::vector<LocalIndex> renumber(order.size());
-  for (std::size_t i = 0; i < order.size(); ++i) renumber[order[i]] = static_cast<LocalIndex>(i);
-  for (auto& [i, j] : model.adjacency) {
-    const LocalIndex a = renumber[i], b = renumber[j];
-    i = std::min(a, b);
-    j = std::max(a, b);
-  }
 
   order.resize(static_cast<std::size_t>(nodes.size()));
   std::iota(order.begin(), order.end(), 0);
-  for (const BodyInfo& body : model.bodies) sortRange(nodes.x, body.node_begin, body.node_end, lo, hi, order);
+  for (const IndexRange& body : bodyRanges(nodes.body, nodes.size(), model.bodies.size()))
+    sortRange(nodes.x, body.begin, body.end, lo, hi, order);
   nodes.permute(order);
   model.connectivity = Connectivity{};
 }

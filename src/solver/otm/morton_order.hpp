@@ -1,8 +1,8 @@
 #pragma once
 // Cache-friendly ordering (docs/performance.md): the points of each body, and the nodes of each
 // body, sorted along a Morton (Z-order) space-filling curve, so that a point's neighbour nodes,
-// and a node's points, lie close together in memory. Bodies keep their contiguous ranges; the
-// mesh adjacency is renumbered with the points. The sort depends on positions only, so every
+// and a node's points, lie close together in memory. Each body's entries stay together (bodyRanges); the
+// mesh adjacency, by point id, needs no renumbering. The sort depends on positions only, so every
 // thread count sees the same order.
 #include "solver/otm/model.hpp"
 

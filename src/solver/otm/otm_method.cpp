@@ -29,7 +29,7 @@ std::vector<std::string> OtmMethod::notes() const {
                   integrator_.tornPoints(), 1e3 * integrator_.tornMass())};
 }
 
-// The names are those of the checkpoint format 5, so that its files read unchanged.
+// The names are those of the checkpoint format 5, so that its files and those of format 6 read alike.
 void OtmMethod::save(StateWriter& out) const {
   const IntegratorState s = integrator_.state();
   out.scalar("integrator_time", s.time);
@@ -79,9 +79,6 @@ void OtmMethod::load(const StateReader& in) {
 
   // What the integrator would otherwise index blindly.
   const auto bodies = static_cast<std::int32_t>(model_.bodies.size());
-  for (const BodyInfo& b : model_.bodies)
-    if (b.node_begin < 0 || b.node_begin > b.node_end || b.node_end > nodes.size())
-      in.fail(fmt::format("use body '{}': its node range does not fit the store", b.name));
   for (LocalIndex a = 0; a < nodes.size(); ++a)
     if (nodes.body[a] < 0 || nodes.body[a] >= bodies) in.fail(fmt::format("use node {}: no such body", a));
   if (conn.offset.front() != 0 || static_cast<std::size_t>(conn.offset.back()) != conn.node.size())

@@ -51,12 +51,11 @@ int addBody(Model& model, const std::string& name, const MaterialPtr& material, 
     KESSLER_VERIFY(i >= 0 && i < j && static_cast<std::size_t>(j) < mesh.points.size(),
                    "body '{}': adjacency pair ({}, {}) is not ordered within its {} points", name, i, j,
                    mesh.points.size());
-    model.adjacency.push_back({offset + i, offset + j});
+    model.adjacency.push_back({points.id[offset + i], points.id[offset + j]});
     const auto a = static_cast<std::size_t>(i), b = static_cast<std::size_t>(j);
     model.adjacency_length0.push_back((mesh.points[b] - mesh.points[a]).norm());
   }
-  model.bodies.push_back(BodyInfo{name, material_index, static_cast<LocalIndex>(point_begin), points.size(),
-                                  static_cast<LocalIndex>(node_begin), nodes.size()});
+  model.bodies.push_back(BodyInfo{name, material_index});
   return body;
 }
 
@@ -83,8 +82,8 @@ Model buildModel(const std::vector<BodySetup>& bodies, const std::vector<int>& s
     request.symmetry_axes = symmetry_axes;
     const geometry::TetMesh mesh = geometry::meshShape(request);
     const geometry::Discretisation disc = geometry::discretise(mesh);
+    const LocalIndex first = model.nodes.size();
     const int body = addBody(model, setup.name, setup.material, disc, setup.velocity);
-    const LocalIndex first = model.bodies[body].node_begin;
     for (LocalIndex local : geometry::selectNodes(setup.mesh.shape, disc.nodes, setup.fixed))
       for (int axis = 0; axis < 3; ++axis) constrainNode(model, first + local, axis);
     // Nodes on a symmetry plane (Gmsh puts them on the clipping plane up to round-off) keep a

@@ -182,7 +182,7 @@ TEST(Fragments, ModelAdjacencyIsOffsetPerBody) {
   const std::size_t first_links = model.adjacency.size();
   addBlock(model, "b", {Vec3(5 * mm, 0, 0), Vec3(6 * mm, 1 * mm, 1 * mm)}, {2, 2, 2});
   ASSERT_EQ(model.adjacency.size(), 2 * first_links);
-  const LocalIndex begin = model.bodies[1].point_begin;
+  const LocalIndex begin = bodyRanges(model.points.body, model.points.size(), model.bodies.size())[1].begin;
   for (std::size_t k = first_links; k < model.adjacency.size(); ++k) {
     EXPECT_GE(model.adjacency[k][0], begin);
     EXPECT_EQ(model.adjacency[k][0] - begin, model.adjacency[k - first_links][0]);

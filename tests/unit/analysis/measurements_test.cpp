@@ -214,8 +214,8 @@ TEST(Cloud, SpeedsAreMassQuantilesOfTheVelocities) {
       v.push_back(u * down + (w * r / R) * radial);
     }
     const int debris = addCloud(m.model, "projectile", x, 1e-9);
-    const BodyInfo& body = m.model.bodies[debris];
-    for (LocalIndex p = body.point_begin; p < body.point_end; ++p) m.model.points.v[p] = v[p - body.point_begin];
+    const IndexRange body = bodyRanges(m.model.points.body, m.model.points.size(), m.model.bodies.size())[debris];
+    for (LocalIndex p = body.begin; p < body.end; ++p) m.model.points.v[p] = v[p - body.begin];
     m.geometry.projectile_bodies = {debris};
     if (quarter) m.geometry.symmetry_axes = {0, 1};
     const CloudMeasurement c = measureClouds(m.model, m.geometry)[0];
@@ -228,7 +228,8 @@ TEST(Cloud, SpeedsAreMassQuantilesOfTheVelocities) {
   PlateModel m = plateModel();
   std::vector<Vec3> x(40, Vec3(0, 0, -10 * mm));
   const int debris = addCloud(m.model, "projectile", x, 1e-9, testing::aluminium(), u * down);
-  m.model.points.v[m.model.bodies[debris].point_begin] = 3 * u * down;
+  m.model.points.v[bodyRanges(m.model.points.body, m.model.points.size(), m.model.bodies.size())[debris].begin] =
+      3 * u * down;
   m.geometry.projectile_bodies = {debris};
   const CloudMeasurement c = measureClouds(m.model, m.geometry)[0];
   EXPECT_NEAR(c.mean_axial_speed, u * (39.0 + 3.0) / 40.0, 1e-9);
@@ -276,9 +277,9 @@ TEST(RearWall, PerforationSpallAndNone) {
                                1e-9);
     PointStore& points = m.model.points;
     double struck = 0.0;
-    const BodyInfo& debris = m.model.bodies[cloud];
-    for (LocalIndex p = debris.point_begin; p < debris.point_end; ++p) {
-      const LocalIndex k = p - debris.point_begin;
+    const IndexRange debris = bodyRanges(points.body, points.size(), m.model.bodies.size())[cloud];
+    for (LocalIndex p = debris.begin; p < debris.end; ++p) {
+      const LocalIndex k = p - debris.begin;
       points.broken[p] = 1;
       points.carrier[p] = -1;
       if (k < 3) points.strike(p, m.plate);

@@ -34,13 +34,12 @@ inline int addCloud(otm::Model& model, const std::string& name, const std::vecto
 template <class Pred>
 int erodeWhere(otm::Model& model, int body, const Pred& pred) {
   int count = 0;
-  const BodyInfo& info = model.bodies[body];
-  for (LocalIndex p = info.point_begin; p < info.point_end; ++p) {
+  forEachPointOf(model.points, body, [&](LocalIndex p) {
     if (pred(model.points.x[p])) {
       model.points.broken[p] = 1;
       ++count;
     }
-  }
+  });
   return count;
 }
 

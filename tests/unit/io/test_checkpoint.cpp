@@ -12,6 +12,7 @@
 #include "solver/otm/setup.hpp"
 
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
 #include <cstring>
 #include <filesystem>
@@ -142,7 +143,10 @@ TEST_F(CheckpointTest, RestoresTheModelAndTheRunStateBitwise) {
   EXPECT_EQ(differences(model, restored), 0);
   ASSERT_EQ(restored.bodies.size(), 2u);
   EXPECT_EQ(restored.bodies[1].name, "flyer");
-  EXPECT_EQ(restored.bodies[1].point_begin, model.bodies[1].point_begin);
+  EXPECT_EQ(restored.bodies[1].material, model.bodies[1].material);
+  EXPECT_EQ(restored.points.body, model.points.body);
+  EXPECT_EQ(restored.adjacency, model.adjacency);
+  EXPECT_EQ(restored.adjacency_length0, model.adjacency_length0);
   // The blocks touch: each records the other (what its debris will pass through).
   EXPECT_EQ(model.bodies[0].touched, 0b11u);
   EXPECT_EQ(restored.bodies[0].touched, model.bodies[0].touched);
@@ -159,6 +163,43 @@ TEST_F(CheckpointTest, RestoresTheModelAndTheRunStateBitwise) {
   EXPECT_EQ(std::memcmp(&read.loop.history[1].energies, &written.history[1].energies, sizeof(Energies)), 0);
   EXPECT_EQ(temporalPolyvertexXdmf("p", read.loop.point_grids), temporalPolyvertexXdmf("p", written.point_grids));
   EXPECT_EQ(read.loop.node_grids.size(), 2u);
+}
+
+// Format 5 stored the links by index in the store (which the Morton sort had reordered, so that
+// indices and ids differ); the reader turns them into the points' ids.
+TEST_F(CheckpointTest, ReadsTheLinksOfAFormat5CheckpointByIndex) {
+  const std::unique_ptr<otm::OtmMethod> method = twoBlocksAfter(material_, 2);
+  const otm::Model& model = method->model();
+  const fs::path file = dir_ / "checkpoint.h5";
+  writeCheckpoint(file, *method, someLoopState(*method));
+  const std::vector<LocalIndex> index = indexById(model.points);
+  std::vector<LocalIndex> by_index;
+  bool reordered = false;
+  for (const auto& [i, j] : model.adjacency) {
+    const LocalIndex a = index[static_cast<std::size_t>(i)], b = index[static_cast<std::size_t>(j)];
+    by_index.push_back(std::min(a, b));
+    by_index.push_back(std::max(a, b));
+    reordered = reordered || a != i || b != j;
+  }
+  ASSERT_TRUE(reordered) << "the test needs points whose index differs from their id";
+  {
+    const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    ASSERT_GE(f, 0);
+    const hid_t attr = H5Aopen(f, "kessler_checkpoint_format", H5P_DEFAULT);
+    const std::int64_t five = 5;
+    ASSERT_GE(H5Awrite(attr, H5T_NATIVE_INT64, &five), 0);
+    H5Aclose(attr);
+    ASSERT_GE(H5Ldelete(f, "/adjacency/pairs", H5P_DEFAULT), 0);
+    const hsize_t dims[2] = {model.adjacency.size(), 2};
+    const hid_t space = H5Screate_simple(2, dims, nullptr);
+    const hid_t set = H5Dcreate2(f, "/adjacency/pairs", H5T_NATIVE_INT32, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    ASSERT_GE(H5Dwrite(set, H5T_NATIVE_INT32, H5S_ALL, H5S_ALL, H5P_DEFAULT, by_index.data()), 0);
+    H5Dclose(set);
+    H5Sclose(space);
+    H5Fclose(f);
+  }
+  const Restored read = readCheckpoint(file, {material_}, otmFor);
+  EXPECT_EQ(asOtm(*read.method).model().adjacency, model.adjacency);
 }
 
 TEST_F(CheckpointTest, ARestartedRunIsBitwiseTheUninterruptedRun) {

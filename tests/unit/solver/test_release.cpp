@@ -82,24 +82,24 @@ TEST(FailedMaterial, PushesWhatItHitsWhereDebrisWouldPassThrough) {
 TEST(DebrisRelease, ReleasesOnlyTheFailedPointsThatBearNothing) {
   Model model = blockOntoWall();
   PointStore& points = model.points;
-  const BodyInfo& block = model.bodies[block_body];
-  for (LocalIndex p = block.point_begin; p < block.point_end; ++p) {
+  const std::vector<IndexRange> ranges = bodyRanges(points.body, points.size(), model.bodies.size());
+  const IndexRange& block = ranges[block_body];
+  for (LocalIndex p = block.begin; p < block.end; ++p) {
     points.fail(p);
     // Half of them still under pressure, the other half stress-free.
-    if ((p - block.point_begin) % 2 == 0) points.stress[p] = -1e9 * Mat3::Identity();
+    if ((p - block.begin) % 2 == 0) points.stress[p] = -1e9 * Mat3::Identity();
   }
   Settings settings;
   const LocalIndex released = DebrisRelease(settings.erosion_radius).apply(model);
-  EXPECT_EQ(released, (block.point_end - block.point_begin) / 2);
-  for (LocalIndex p = block.point_begin; p < block.point_end; ++p) {
-    const bool loaded = (p - block.point_begin) % 2 == 0;
+  EXPECT_EQ(released, (block.end - block.begin) / 2);
+  for (LocalIndex p = block.begin; p < block.end; ++p) {
+    const bool loaded = (p - block.begin) % 2 == 0;
     EXPECT_EQ(points.failed(p), loaded) << "point " << p;
     EXPECT_EQ(points.debris(p), !loaded) << "point " << p;
     EXPECT_EQ(points.carrier[p], loaded ? block_body : -1);
   }
   // The wall's points are untouched.
-  for (LocalIndex p = model.bodies[wall_body].point_begin; p < model.bodies[wall_body].point_end; ++p)
-    EXPECT_FALSE(points.broken[p]);
+  for (LocalIndex p = ranges[wall_body].begin; p < ranges[wall_body].end; ++p) EXPECT_FALSE(points.broken[p]);
 }
 
 }  // namespace
