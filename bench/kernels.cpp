@@ -4,12 +4,13 @@
 // cube) with the library's Al6061-T6, initialised as a run is, so each kernel sees the data
 // layout and neighbour counts of a real step.
 #include "approx/lme.hpp"
+#include "geometry/structured_mesh.hpp"
 #include "material/impact_material.hpp"
 #include "material/library.hpp"
 #include "search/cell_list.hpp"
 #include "solver/otm/integrator.hpp"
 #include "solver/otm/integrator_assembly.hpp"
-#include "verify/fixtures.hpp"
+#include "solver/otm/setup.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -31,8 +32,10 @@ struct Fixture {
   explicit Fixture(int cubes) {
     const library::Entry& al = library::find("Al6061-T6");
     auto material = std::make_shared<ImpactMaterial>(al.name, al.parameters);
-    verify::addBoxBody(model, "block", {Vec3::Zero(), Vec3::Constant(cubes * cell)}, {cubes, cubes, cubes},
-                       Vec3(0, 0, -100.0), material);
+    otm::addBody(model, "block", material,
+                 geometry::discretise(
+                     geometry::structuredBoxMesh({Vec3::Zero(), Vec3::Constant(cubes * cell)}, {cubes, cubes, cubes})),
+                 Vec3(0, 0, -100.0));
     settings.end_time = 1.0;
     integrator = std::make_unique<otm::Integrator>(model, settings);
     integrator->initialise();

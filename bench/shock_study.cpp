@@ -3,7 +3,7 @@
 // unstructured points) at the mesh sizes given in mm, with its plateau measurements and, with
 // `--profile`, the target's slab profile at the end. Options first: `--two-bodies` (a flyer onto a target
 // instead of one slab whose halves meet), `--no-volume-averaging`,
-// `--stabilisation A` (Settings::volume_stabilisation), `--relaxation K` (Settings::volume_relaxation),
+// `--stabilisation A` (OtmOptions::volume_stabilisation), `--relaxation K` (OtmOptions::volume_relaxation),
 // `--contact-distance D`, `--cfl X`, `--noh-end T` (the Noh problem's end time, 0.6 by default; the
 // shock is then at T/3). Not a test.
 #include "core/error.hpp"
@@ -16,7 +16,7 @@
 #include <string>
 
 int main(int argc, char** argv) {
-  kessler::otm::Settings settings;
+  kessler::MethodSettings settings;
   bool profile = false, one_body = true, noh = false;
   double noh_end = 0.6;
   int first = 1;
@@ -31,15 +31,15 @@ int main(int argc, char** argv) {
     } else if (option == "--two-bodies") {
       one_body = false;
     } else if (option == "--no-volume-averaging") {
-      settings.volume_averaging = false;
+      settings.otm.volume_averaging = false;
     } else if (option == "--stabilisation" && first + 1 < argc) {
-      settings.volume_stabilisation = std::atof(argv[++first]);
+      settings.otm.volume_stabilisation = std::atof(argv[++first]);
     } else if (option == "--relaxation" && first + 1 < argc) {
-      settings.volume_relaxation = std::atof(argv[++first]);
+      settings.otm.volume_relaxation = std::atof(argv[++first]);
     } else if (option == "--contact-distance" && first + 1 < argc) {
-      settings.contact_distance = std::atof(argv[++first]);
+      settings.otm.contact_distance = std::atof(argv[++first]);
     } else if (option == "--cfl" && first + 1 < argc) {
-      settings.cfl = std::atof(argv[++first]);
+      settings.solver.cfl = std::atof(argv[++first]);
     } else {
       break;
     }

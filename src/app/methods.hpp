@@ -1,15 +1,19 @@
 #pragma once
-// The one place in the program that knows which particle methods exist (the deck's
-// solver.method): it builds a run's method from the deck, new or from a checkpoint. Everything
-// else drives a method through solver/common/method.hpp.
+// A run's method from its deck, new or from a checkpoint: the deck becomes a Problem
+// (solver/common/problem.hpp) and the solver's factory (solver/methods.hpp) builds the method.
 #include "io/checkpoint.hpp"
 #include "io/config.hpp"
 #include "solver/common/method.hpp"
+#include "solver/common/problem.hpp"
 
 #include <filesystem>
 #include <memory>
 
 namespace kessler::app {
+
+// The deck as a problem: its bodies (with their materials from deckMaterials()), symmetry planes and
+// settings.
+Problem deckProblem(const io::RunConfig& config);
 
 // Meshes the deck's bodies and builds its method; not yet initialised (Method::initialise).
 std::unique_ptr<Method> buildMethod(const io::RunConfig& config);

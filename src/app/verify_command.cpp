@@ -21,16 +21,16 @@ struct VerifyOptions {
   bool list = false;
 };
 
-std::vector<const verify::Problem*> select(const std::vector<std::string>& names) {
-  std::vector<const verify::Problem*> chosen;
-  for (const verify::Problem& p : verify::problems())
+std::vector<const verify::Check*> select(const std::vector<std::string>& names) {
+  std::vector<const verify::Check*> chosen;
+  for (const verify::Check& p : verify::problems())
     if (names.empty() || std::find(names.begin(), names.end(), p.name) != names.end()) chosen.push_back(&p);
   for (const std::string& name : names) {
     const bool known = std::any_of(verify::problems().begin(), verify::problems().end(),
-                                   [&](const verify::Problem& p) { return p.name == name; });
+                                   [&](const verify::Check& p) { return p.name == name; });
     if (!known) {
       std::string all;
-      for (const verify::Problem& p : verify::problems()) all += (all.empty() ? "" : ", ") + p.name;
+      for (const verify::Check& p : verify::problems()) all += (all.empty() ? "" : ", ") + p.name;
       throw InputError(fmt::format("unknown verification problem '{}' (known: {})", name, all));
     }
   }
@@ -52,15 +52,15 @@ nlohmann::json toJson(const verify::Outcome& o) {
 
 void runVerify(const VerifyOptions& options) {
   if (options.list) {
-    for (const verify::Problem& p : verify::problems()) fmt::print("{:<20} {}\n", p.name, p.description);
+    for (const verify::Check& p : verify::problems()) fmt::print("{:<20} {}\n", p.name, p.description);
     return;
   }
-  const std::vector<const verify::Problem*> chosen = select(options.names);
+  const std::vector<const verify::Check*> chosen = select(options.names);
   if (!options.json)
     fmt::print("{:<20} {:>13} {:>13} {:>10} {:>9}  {:<6} {}\n", "problem", "measured", "reference", "error",
                "tolerance", "result", "quantity");
   int failed = 0;
-  for (const verify::Problem* p : chosen) {
+  for (const verify::Check* p : chosen) {
     Stopwatch watch;
     verify::Outcome o;
     try {

@@ -211,7 +211,7 @@ void writeCheckpoint(const std::filesystem::path& file, const Method& method, co
 
   h5.createGroup("/run");
   writeHistoryRows(h5, loop.history);
-  const std::string meta = checkpointMetaText(model, loop);
+  const std::string meta = checkpointMetaText(method.name(), model, loop);
   h5.writeDataset("/run/meta", std::span(reinterpret_cast<const std::uint8_t*>(meta.data()), meta.size()),
                   {meta.size()});
   Hdf5StateWriter own(h5);
@@ -274,9 +274,13 @@ Restored readCheckpoint(const std::filesystem::path& file, const std::vector<Mat
       h5.fail(fmt::format("use /adjacency/pairs: pair ({}, {}) is not two ordered ids of stored points", i, j));
 
   const std::vector<std::uint8_t> meta = h5.read<std::uint8_t>("/run/meta");
-  readCheckpointMeta(std::string(meta.begin(), meta.end()), file, materials, model, loop);
+  const std::string written_by =
+      readCheckpointMeta(std::string(meta.begin(), meta.end()), file, materials, model, loop);
   checkConsistency(h5, model);
   r.method = make(std::move(model));
+  if (written_by != r.method->name())
+    throw Error(fmt::format("checkpoint '{}' was written by solver.method {}; this run's deck gives {}", file.string(),
+                            written_by, r.method->name()));
   r.method->load(own);
   return r;
 }

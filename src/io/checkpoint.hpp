@@ -32,7 +32,7 @@ struct RunLoopState {
   std::vector<XdmfGrid> point_grids, node_grids;  // the outputs listed in points.xdmf, nodes.xdmf
 };
 
-// The method for a restored shared state, not yet loaded (the factory, app/methods.cpp).
+// The method for a restored shared state, not yet loaded (the factory, solver/methods.hpp).
 using MethodFactory = std::function<std::unique_ptr<Method>(ParticleState&&)>;
 
 struct Restored {

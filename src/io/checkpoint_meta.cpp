@@ -55,21 +55,22 @@ std::vector<XdmfGrid> gridsFrom(const json& all) {
 
 }  // namespace
 
-std::string checkpointMetaText(const ParticleState& model, const RunLoopState& loop) {
+std::string checkpointMetaText(const std::string& method, const ParticleState& model, const RunLoopState& loop) {
   json bodies = json::array();
   for (const BodyInfo& b : model.bodies)
     bodies.push_back({{"name", b.name}, {"material", b.material}, {"touched", b.touched}});
   json materials = json::array();
   for (const MaterialPtr& m : model.materials) materials.push_back(m->name());
-  const json meta = {{"bodies", bodies},
+  const json meta = {{"method", method},
+                     {"bodies", bodies},
                      {"materials", materials},
                      {"point_grids", gridsJson(loop.point_grids)},
                      {"node_grids", gridsJson(loop.node_grids)}};
   return meta.dump();
 }
 
-void readCheckpointMeta(const std::string& text, const std::filesystem::path& file,
-                        const std::vector<MaterialPtr>& materials, ParticleState& model, RunLoopState& loop) {
+std::string readCheckpointMeta(const std::string& text, const std::filesystem::path& file,
+                               const std::vector<MaterialPtr>& materials, ParticleState& model, RunLoopState& loop) {
   json meta;
   try {
     meta = json::parse(text);
@@ -89,6 +90,7 @@ void readCheckpointMeta(const std::string& text, const std::filesystem::path& fi
     }
     loop.point_grids = gridsFrom(meta.at("point_grids"));
     loop.node_grids = gridsFrom(meta.at("node_grids"));
+    return meta.contains("method") ? meta.at("method").get<std::string>() : std::string("otm");
   } catch (const json::exception& e) {
     throw Error(fmt::format("checkpoint '{}': damaged description of the run: {}", file.string(), e.what()));
   }

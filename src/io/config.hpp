@@ -66,6 +66,7 @@ struct RunConfig {
   std::vector<MaterialConfig> materials;
   std::vector<BodyConfig> bodies;
   std::vector<int> symmetry_axes;  // 0 = x, 1 = y, 2 = z: planes through the origin
+  std::string method = "otm";      // solver.method
   SolverSettings solver;           // the keys of `solver` every method reads
   OtmOptions otm;                  // `solver.otm`
   OutputConfig output;

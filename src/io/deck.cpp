@@ -5,6 +5,7 @@
 #include "io/deck_overrides.hpp"
 #include "io/deck_parts.hpp"
 #include "io/yaml_reader.hpp"
+#include "solver/methods.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -65,8 +66,12 @@ void parseSolver(const Field& field, RunConfig& config) {
   MapField map = field.map(
       {"method", "end_time", "cfl", "max_steps", "min_dt_fraction", "max_energy_growth", "debris_contact", "otm"},
       moved);
-  if (std::optional<Field> method = map.find("method"); method && method->text() != "otm")
-    method->fail("unknown method (known: otm)");
+  if (std::optional<Field> method = map.find("method")) {
+    const std::vector<std::string>& known = methodNames();
+    if (std::find(known.begin(), known.end(), method->text()) == known.end())
+      method->fail(fmt::format("unknown method (known: {})", fmt::join(known, ", ")));
+    config.method = method->text();
+  }
   SolverSettings& s = config.solver;
   s.end_time = map.require("end_time").positive(units::time);
   if (std::optional<Field> cfl = map.find("cfl")) {

@@ -194,7 +194,7 @@ std::string resolvedDeckText(const RunConfig& config) {
 
   const SolverSettings& s = config.solver;
   out << YAML::Key << "solver" << YAML::Value << YAML::BeginMap;
-  out << YAML::Key << "method" << YAML::Value << "otm";
+  out << YAML::Key << "method" << YAML::Value << config.method;
   scalar(out, "end_time", s.end_time, "s");
   scalar(out, "cfl", s.cfl, "");
   out << YAML::Key << "max_steps" << YAML::Value << s.max_steps << YAML::Comment("0: no limit");

@@ -7,6 +7,7 @@
 // support (about 2.8 h at gamma 1.8) would couple them at a gap of about 2.5 h.
 // Measured: the gap at the first step that moves the block, over contact_distance * h_max;
 // it must lie in [0, 1] (reference 0.5, absolute tolerance 0.5).
+#include "solver/methods.hpp"
 #include "verify/fixtures.hpp"
 #include "verify/problems.hpp"
 
@@ -18,37 +19,38 @@ namespace kessler::verify {
 Outcome contactGap() {
   const double c = 1e-3, speed = 200.0, gap0 = 3 * c;
   auto material = elasticAluminium();
-  otm::Model model;
-  const int a =
-      addBoxBody(model, "cube", {Vec3(0, 0, 0), Vec3(4 * c, 4 * c, 4 * c)}, {4, 4, 4}, Vec3(speed, 0.0, 0.0), material);
-  const int b = addBoxBody(model, "block", {Vec3(4 * c + gap0, -c, -c), Vec3(10 * c + gap0, 5 * c, 5 * c)}, {6, 6, 6},
-                           Vec3::Zero(), material);
-
-  otm::Settings settings;
-  settings.end_time = (gap0 + c) / speed;  // one cell past touching
-  otm::Integrator integrator(model, settings);
-  integrator.initialise();
+  const int a = 0, b = 1;
+  Problem problem;
+  problem.bodies = {
+      boxBody("cube", {Vec3(0, 0, 0), Vec3(4 * c, 4 * c, 4 * c)}, {4, 4, 4}, Vec3(speed, 0.0, 0.0), material),
+      boxBody("block", {Vec3(4 * c + gap0, -c, -c), Vec3(10 * c + gap0, 5 * c, 5 * c)}, {6, 6, 6}, Vec3::Zero(),
+              material)};
+  problem.settings.solver.end_time = (gap0 + c) / speed;  // one cell past touching
+  std::unique_ptr<Method> method = makeMethod(problem);
+  method->initialise();
+  const PointStore& points = method->state().points;
+  const NodeStore& nodes = method->nodes();
 
   double h_max = 0.0;
-  for (LocalIndex p = 0; p < model.points.owned; ++p) h_max = std::max(h_max, model.points.spacing(p));
-  const double coupling = settings.contact_distance * h_max;
+  for (LocalIndex p = 0; p < points.owned; ++p) h_max = std::max(h_max, points.spacing(p));
+  const double coupling = problem.settings.otm.contact_distance * h_max;
   auto surfaceGap = [&] {
     double front = -std::numeric_limits<double>::infinity(), back = std::numeric_limits<double>::infinity();
-    for (LocalIndex n = 0; n < model.nodes.owned; ++n) {
-      if (model.nodes.body[n] == a) front = std::max(front, model.nodes.x[n][0]);
-      if (model.nodes.body[n] == b) back = std::min(back, model.nodes.x[n][0]);
+    for (LocalIndex n = 0; n < nodes.owned; ++n) {
+      if (nodes.body[n] == a) front = std::max(front, nodes.x[n][0]);
+      if (nodes.body[n] == b) back = std::min(back, nodes.x[n][0]);
     }
     return back - front;
   };
   auto blockMoves = [&] {
-    for (LocalIndex p = 0; p < model.points.owned; ++p)
-      if (model.points.body[p] == b && model.points.v[p] != Vec3::Zero()) return true;
+    for (LocalIndex p = 0; p < points.owned; ++p)
+      if (points.body[p] == b && points.v[p] != Vec3::Zero()) return true;
     return false;
   };
 
   double gap_before = surfaceGap(), first_gap = std::numeric_limits<double>::infinity();
-  while (!integrator.finished()) {
-    integrator.step();
+  while (!method->finished()) {
+    method->step();
     if (blockMoves()) {
       first_gap = gap_before;  // the neighbourhoods of this step were built at the previous gap
       break;
@@ -66,7 +68,7 @@ Outcome contactGap() {
   o.note = fmt::format(
       "first interaction at step {} across a gap of {:.3f} mm (start {:.1f} mm); contact_distance h "
       "= {:.3f} mm",
-      integrator.steps(), 1e3 * first_gap, 1e3 * gap0, 1e3 * coupling);
+      method->clock().steps, 1e3 * first_gap, 1e3 * gap0, 1e3 * coupling);
   return compare(o);
 }
 

@@ -1,20 +1,43 @@
 #include "verify/fixtures.hpp"
 
 #include "geometry/structured_mesh.hpp"
+#include "solver/methods.hpp"
 
 #include <cstring>
+#include <limits>
 
 namespace kessler::verify {
 
 std::shared_ptr<const NeoHookean> elasticAluminium() {
-  return std::make_shared<NeoHookean>("aluminium (elastic)",
-                                      NeoHookeanParameters{.density = 2700.0, .youngs_modulus = 70e9, .poisson_ratio = 0.33});
+  return std::make_shared<NeoHookean>(
+      "aluminium (elastic)", NeoHookeanParameters{.density = 2700.0, .youngs_modulus = 70e9, .poisson_ratio = 0.33});
 }
 
-int addBoxBody(otm::Model& model, const std::string& name, const geometry::Box& box, const std::array<int, 3>& cells,
-               const Vec3& velocity, const MaterialPtr& material) {
-  const geometry::Discretisation disc = geometry::discretise(geometry::structuredBoxMesh(box, cells));
-  return otm::addBody(model, name, material, disc, velocity);
+BodySetup boxBody(const std::string& name, const geometry::Box& box, const std::array<int, 3>& cells,
+                  const Vec3& velocity, const MaterialPtr& material) {
+  BodySetup body;
+  body.name = name;
+  body.material = material;
+  body.mesh = geometry::discretise(geometry::structuredBoxMesh(box, cells));
+  body.velocity = velocity;
+  return body;
+}
+
+PlaneConstraint lockAxis(int axis) {
+  PlaneConstraint every;
+  every.axis = axis;
+  every.tolerance = std::numeric_limits<double>::infinity();
+  return every;
+}
+
+std::unique_ptr<Method> runToEnd(const Problem& problem, const std::function<bool(const Method&)>& after_step) {
+  std::unique_ptr<Method> method = makeMethod(problem);
+  method->initialise();
+  while (!method->finished()) {
+    method->step();
+    if (after_step && !after_step(*method)) break;
+  }
+  return method;
 }
 
 namespace {
@@ -29,11 +52,11 @@ long differing(const std::vector<T>& a, const std::vector<T>& b) {
 
 }  // namespace
 
-long countDifferences(const otm::Model& a, const otm::Model& b) {
-  return differing(a.nodes.x, b.nodes.x) + differing(a.nodes.v, b.nodes.v) + differing(a.points.x, b.points.x) +
-         differing(a.points.v, b.points.v) + differing(a.points.F, b.points.F) +
-         differing(a.points.stress, b.points.stress) + differing(a.points.volume, b.points.volume) +
-         differing(a.connectivity.N, b.connectivity.N);
+long countDifferences(const Method& a, const Method& b) {
+  const PointStore &p = a.state().points, &q = b.state().points;
+  const NodeStore &m = a.nodes(), &n = b.nodes();
+  return differing(m.x, n.x) + differing(m.v, n.v) + differing(p.x, q.x) + differing(p.v, q.v) + differing(p.F, q.F) +
+         differing(p.stress, q.stress) + differing(p.volume, q.volume);
 }
 
 }  // namespace kessler::verify

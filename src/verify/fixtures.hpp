@@ -2,8 +2,8 @@
 // Building blocks shared by the verification problems.
 #include "geometry/shape.hpp"
 #include "material/neo_hookean.hpp"
-#include "solver/otm/integrator.hpp"
-#include "solver/otm/setup.hpp"
+#include "solver/common/method.hpp"
+#include "solver/common/problem.hpp"
 
 #include <array>
 #include <memory>
@@ -13,12 +13,21 @@ namespace kessler::verify {
 // An aluminium-like neo-Hookean solid: rho 2700 kg/m^3, E 70 GPa, nu 0.33.
 std::shared_ptr<const NeoHookean> elasticAluminium();
 
-// Adds a box body meshed with the structured Kuhn triangulation; returns the body index.
-int addBoxBody(otm::Model& model, const std::string& name, const geometry::Box& box, const std::array<int, 3>& cells,
-               const Vec3& velocity, const MaterialPtr& material);
+// A box body meshed with the structured Kuhn triangulation.
+BodySetup boxBody(const std::string& name, const geometry::Box& box, const std::array<int, 3>& cells,
+                  const Vec3& velocity, const MaterialPtr& material);
 
-// Number of node and point values (positions, velocities, F, stress, volume, shape functions)
-// that differ bitwise between two models.
-long countDifferences(const otm::Model& a, const otm::Model& b);
+// Every carrier of the problem's bodies keeps a zero velocity along `axis` (uniaxial strain
+// across it).
+PlaneConstraint lockAxis(int axis);
+
+// The problem's method, initialised and run to its end time; `after_step` (if given) is called
+// after every step and stops the run when it returns false.
+std::unique_ptr<Method> runToEnd(const Problem& problem,
+                                 const std::function<bool(const Method&)>& after_step = nullptr);
+
+// Number of node and point values (positions, velocities, F, stress, volume) that differ bitwise
+// between two methods' states.
+long countDifferences(const Method& a, const Method& b);
 
 }  // namespace kessler::verify

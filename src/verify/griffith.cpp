@@ -6,6 +6,7 @@
 //   sigma_c = sqrt(E G_c / (pi a)) / sqrt(sec(pi a / (2W)))
 // (Griffith 1921; finite-width correction of Feddersen 1966). Tolerance 10%.
 #include "core/reduce.hpp"
+#include "solver/methods.hpp"
 #include "verify/fixtures.hpp"
 #include "verify/impact_problems.hpp"
 
@@ -27,15 +28,19 @@ GriffithResult runGriffith(const GriffithCase& g) {
       NeoHookeanParameters{.density = 2700.0, .youngs_modulus = E, .poisson_ratio = nu, .fracture_energy = gc});
   const int nx = static_cast<int>(std::lround(2 * half_width / h)),
             ny = static_cast<int>(std::lround(2 * half_height / h));
-  otm::Model model;
-  addBoxBody(model, "plate", {Vec3(-half_width, -half_height, 0), Vec3(half_width, half_height, thickness)},
-             {nx, ny, g.thickness_cells}, Vec3::Zero(), material);
-  // The initial crack: the row of points just above y = 0 over |x| < a.
-  std::vector<std::uint8_t> initial(model.points.owned, 0);
-  for (LocalIndex p = 0; p < model.points.owned; ++p) {
-    const Vec3& x = model.points.x[p];
-    if (x[1] > 0 && x[1] < h && std::abs(x[0]) < a) initial[p] = model.points.broken[p] = 1;
-  }
+  Problem problem;
+  problem.bodies = {boxBody("plate", {Vec3(-half_width, -half_height, 0), Vec3(half_width, half_height, thickness)},
+                            {nx, ny, g.thickness_cells}, Vec3::Zero(), material)};
+  // The initial crack: the row of points just above y = 0 over |x| < a (their ids).
+  std::vector<std::uint8_t> initial;
+  problem.prepare = [&](ParticleState& model) {
+    initial.assign(model.points.x.size(), 0);
+    for (LocalIndex p = 0; p < model.points.owned; ++p) {
+      const Vec3& x = model.points.x[p];
+      if (x[1] > 0 && x[1] < h && std::abs(x[0]) < a)
+        initial[static_cast<std::size_t>(model.points.id[p])] = model.points.broken[p] = 1;
+    }
+  };
   const double sigma_ref =
       std::sqrt(E * gc / (std::numbers::pi * a)) / std::sqrt(1.0 / std::cos(std::numbers::pi * a / (2 * half_width)));
   // Load: edge speed ramped linearly so that the Griffith stress is reached after about five
@@ -43,48 +48,46 @@ GriffithResult runGriffith(const GriffithCase& g) {
   const double c = std::sqrt(E / 2700.0);
   const double t_fail = 5.0 * 2 * half_height / c;
   const double strain_fail = sigma_ref / E;
-  // Edge displacement u(t) = u_f (t / t_fail)^2 reaches H strain_fail at t_fail: v(t) = 2 u_f t / t_fail^2.
+  // Edge displacement u(t) = u_f (t / t_fail)^2 reaches H strain_fail at t_fail: v(t) = 2 u_f t / t_fail^2,
+  // upwards at the top edge and downwards at the bottom one.
   const double u_f = half_height * strain_fail;
   const double tol = 1e-9 * h;
-  otm::constrainPlane(model, 1, half_height, tol, 0.0);
-  otm::constrainPlane(model, 1, -half_height, tol, 0.0);
+  auto pull = [=](double t) { return 2.0 * u_f * t / (t_fail * t_fail); };
+  problem.planes = {
+      {.axis = 1, .offset = half_height, .tolerance = tol, .history = pull},
+      {.axis = 1, .offset = -half_height, .tolerance = tol, .history = [=](double t) { return -pull(t); }}};
+  problem.settings.solver.end_time = 2.0 * t_fail;
+  problem.settings.solver.erosion_radius = g.erosion_radius;
+  problem.settings.otm.crack_visibility = g.crack_visibility;
 
-  otm::Settings settings;
-  settings.end_time = 2.0 * t_fail;
-  settings.erosion_radius = g.erosion_radius;
-  settings.crack_visibility = g.crack_visibility;
-  otm::Integrator integrator(model, settings);
-  integrator.initialise();
-  const LocalIndex initial_eroded =
-      static_cast<LocalIndex>(std::count(model.points.broken.begin(), model.points.broken.end(), std::uint8_t{1}));
+  std::unique_ptr<Method> method = makeMethod(problem);
+  const PointStore& points = method->state().points;
+  method->initialise();
+  const auto initial_eroded =
+      static_cast<LocalIndex>(std::count(points.broken.begin(), points.broken.end(), std::uint8_t{1}));
   GriffithResult r;
   r.reference = sigma_ref;
   r.fail_time_reference = t_fail;
-  r.points = model.points.owned;
-  while (!integrator.finished()) {
-    const double v = 2.0 * u_f * (integrator.time() + 0.5 * integrator.nextStep()) / (t_fail * t_fail);
-    for (LocalIndex n = 0; n < model.nodes.owned; ++n) {
-      if (!(model.nodes.constrained[n] & 2u)) continue;
-      model.nodes.prescribed_v[n][1] = model.nodes.x[n][1] > 0 ? v : -v;
-    }
-    integrator.step();
-    const LocalIndex eroded =
-        static_cast<LocalIndex>(std::count(model.points.broken.begin(), model.points.broken.end(), std::uint8_t{1}));
+  r.points = points.owned;
+  while (!method->finished()) {
+    method->step();
+    const auto eroded =
+        static_cast<LocalIndex>(std::count(points.broken.begin(), points.broken.end(), std::uint8_t{1}));
     if (eroded > initial_eroded) {  // the crack grew: the remote stress now
       double mass = 0.0, sum = 0.0;
-      for (LocalIndex p = 0; p < model.points.owned; ++p) {
-        if (model.points.broken[p] || std::abs(model.points.x[p][1]) < 0.5 * half_height) continue;
-        mass += model.points.mass[p];
-        sum += model.points.mass[p] * model.points.stress[p](1, 1);
+      for (LocalIndex p = 0; p < points.owned; ++p) {
+        if (points.broken[p] || std::abs(points.x[p][1]) < 0.5 * half_height) continue;
+        mass += points.mass[p];
+        sum += points.mass[p] * points.stress[p](1, 1);
       }
       r.failure_stress = sum / mass;
-      r.failure_time = integrator.time();
-      for (LocalIndex p = 0; p < model.points.owned; ++p)
-        if (model.points.broken[p] && !initial[p]) r.first_eroded = model.points.x[p];
+      r.failure_time = method->clock().time;
+      for (LocalIndex p = 0; p < points.owned; ++p)
+        if (points.broken[p] && !initial[static_cast<std::size_t>(points.id[p])]) r.first_eroded = points.x[p];
       break;
     }
   }
-  r.steps = integrator.steps();
+  r.steps = method->clock().steps;
   return r;
 }
 

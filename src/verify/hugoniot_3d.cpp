@@ -13,7 +13,7 @@
 // the densest point of the plateau, not an average.
 #include "geometry/mesh.hpp"
 #include "material/library.hpp"
-#include "solver/otm/volume_patch.hpp"
+#include "solver/methods.hpp"
 #include "verify/fixtures.hpp"
 #include "verify/impact_problems.hpp"
 
@@ -38,8 +38,9 @@ struct Plateau {
 
 // The measured half: the points whose initial height z0 (indexed by point id; the integrator reorders
 // the points) is positive; `upstream`: the velocity of its material ahead of the shock.
-// `alpha`: the volume stabilisation's factor, for the slabs' mean stabilisation pressure.
-Plateau measure(const otm::Model& model, const std::vector<double>& z0_by_id, double h, double upstream, double alpha) {
+// The slabs' stabilisation pressure is the method's addedPressure.
+Plateau measure(const Method& method, const std::vector<double>& z0_by_id, double h, double upstream) {
+  const ParticleState& model = method.state();
   const double slab = 0.5 * h;
   const int slabs = static_cast<int>(std::ceil(length / slab)) + 1;
   std::vector<double> mass(slabs, 0.0), momentum(slabs, 0.0), volume_of(slabs, 0.0);
@@ -58,9 +59,7 @@ Plateau measure(const otm::Model& model, const std::vector<double>& z0_by_id, do
     out_slab.pressure += m * (-points.stress[p].trace() / 3.0 - points.viscous_pressure[p]);
     out_slab.viscous_pressure += m * points.viscous_pressure[p];
     out_slab.energy += m * points.energy[p];
-    out_slab.stabilisation_pressure +=
-        m * otm::stabilisationPressure(points, p, alpha,
-                                       model.materials[model.bodies[points.body[p]].material]->tensileLimit());
+    out_slab.stabilisation_pressure += m * method.addedPressure(p);
   }
   for (int s = 0; s < slabs; ++s) {
     Slab& out_slab = out.slabs[static_cast<std::size_t>(s)];
@@ -106,7 +105,7 @@ Plateau measure(const otm::Model& model, const std::vector<double>& z0_by_id, do
 
 }  // namespace
 
-Hugoniot3dResult runHugoniot3d(double mesh_size, otm::Settings settings, bool one_body) {
+Hugoniot3dResult runHugoniot3d(double mesh_size, MethodSettings settings, bool one_body) {
   const library::Entry& al = library::find("Al6061-T6");
   // As flyer-plate: no damage model, eigenerosion with the library's G_c and Bao & Wierzbicki's
   // cut-off, so that the shock itself fails no point.
@@ -123,25 +122,23 @@ Hugoniot3dResult runHugoniot3d(double mesh_size, otm::Settings settings, bool on
     request.mesh_size = h;
     return geometry::discretise(geometry::meshShape(request));
   };
-  otm::Model model;
+  Problem problem;
   double upstream = 0.0;  // the velocity of the measured half's material ahead of its shock
   if (one_body) {
     // In the frame of the centre of mass: one slab whose halves meet at v, each at v/2.
-    otm::addBody(model, "slab", material, slab(-length, length), Vec3::Zero());
+    BodySetup body{.name = "slab", .material = material, .mesh = slab(-length, length)};
+    body.velocity_field = [v](const Vec3& x) { return Vec3(0, 0, x[2] < 0.0 ? 0.5 * v : x[2] > 0.0 ? -0.5 * v : 0.0); };
+    problem.bodies = {body};
     upstream = -0.5 * v;
-    auto velocity = [&](double z) { return Vec3(0, 0, z < 0.0 ? 0.5 * v : z > 0.0 ? -0.5 * v : 0.0); };
-    for (LocalIndex a = 0; a < model.nodes.size(); ++a) model.nodes.v[a] = velocity(model.nodes.x[a][2]);
-    for (LocalIndex p = 0; p < model.points.size(); ++p) model.points.v[p] = velocity(model.points.x[p][2]);
   } else {
-    otm::addBody(model, "flyer", material, slab(-length - gap, -gap), Vec3(0, 0, v));
-    otm::addBody(model, "target", material, slab(0.0, length), Vec3::Zero());
+    problem.bodies = {
+        BodySetup{.name = "flyer", .material = material, .mesh = slab(-length - gap, -gap), .velocity = Vec3(0, 0, v)},
+        BodySetup{.name = "target", .material = material, .mesh = slab(0.0, length)}};
   }
-  std::vector<double> z0(static_cast<std::size_t>(model.points.size()));  // initial heights by point id
-  for (LocalIndex p = 0; p < model.points.size(); ++p)
-    z0[static_cast<std::size_t>(model.points.id[p])] = model.points.x[p][2];
   // Rollers on the four lateral faces: uniaxial strain.
   for (int axis = 0; axis < 2; ++axis)
-    for (double offset : {0.0, width}) otm::constrainPlane(model, axis, offset, 1e-6 * h);
+    for (double offset : {0.0, width})
+      problem.planes.push_back({.axis = axis, .offset = offset, .tolerance = 1e-6 * h});
 
   Hugoniot3dResult r;
   r.reference_velocity = 0.5 * v;
@@ -153,31 +150,35 @@ Hugoniot3dResult runHugoniot3d(double mesh_size, otm::Settings settings, bool on
   // other half's far end (16 mm, shocked at the same rate) can reach it.
   const double t1 = 3e-3 / r.reference_shock_speed, t2 = 12e-3 / r.reference_shock_speed;
 
-  settings.end_time = t2;
-  otm::Integrator integrator(model, settings);
-  integrator.initialise();
-  const double alpha = settings.volume_averaging ? settings.volume_stabilisation : 0.0;
-  const double energy0 = integrator.energies().total();
+  problem.settings = settings;
+  problem.settings.solver.end_time = t2;
+  std::unique_ptr<Method> method = makeMethod(problem);
+  const ParticleState& model = method->state();
+  std::vector<double> z0(static_cast<std::size_t>(model.points.size()));  // initial heights by point id
+  for (LocalIndex p = 0; p < model.points.size(); ++p)
+    z0[static_cast<std::size_t>(model.points.id[p])] = model.points.x[p][2];
+  method->initialise();
+  const double energy0 = method->energies().total();
   Plateau first;
   double t_first = 0.0;
-  while (!integrator.finished()) {
-    integrator.step();
-    if (t_first == 0.0 && integrator.time() >= t1) {
-      first = measure(model, z0, h, upstream, alpha);
-      t_first = integrator.time();
+  while (!method->finished()) {
+    method->step();
+    if (t_first == 0.0 && method->clock().time >= t1) {
+      first = measure(*method, z0, h, upstream);
+      t_first = method->clock().time;
     }
   }
-  const Plateau last = measure(model, z0, h, upstream, alpha);
+  const Plateau last = measure(*method, z0, h, upstream);
   r.particle_velocity = last.velocity;
-  r.shock_speed = (last.front - first.front) / (integrator.time() - t_first) - upstream;
+  r.shock_speed = (last.front - first.front) / (method->clock().time - t_first) - upstream;
   r.pressure = last.pressure;
   r.density = last.density;
   r.max_density = last.max_density;
   r.max_pressure = last.max_pressure;
   r.plateau_points = last.points;
-  r.steps = integrator.steps();
+  r.steps = method->clock().steps;
   r.points = model.points.owned;
-  r.energy_change = integrator.energies().total() / energy0 - 1.0;
+  r.energy_change = method->energies().total() / energy0 - 1.0;
   r.profile = last.slabs;
   return r;
 }

@@ -1,7 +1,7 @@
 #pragma once
 // Verification problems of the impact materials (whole runs).
 #include "core/types.hpp"
-#include "solver/otm/settings.hpp"
+#include "solver/common/settings.hpp"
 #include "verify/problem.hpp"
 
 #include <fmt/format.h>
@@ -77,13 +77,13 @@ struct NohResult {
 
 // mesh_size: the Gmsh target edge length of the unit sphere; settings: the solver's (its end_time is
 // replaced by end_time, when the problem is measured: the shock is then at end_time / 3).
-NohResult runNoh3d(double mesh_size, otm::Settings settings = {}, double end_time = 0.6);
+NohResult runNoh3d(double mesh_size, MethodSettings settings = {}, double end_time = 0.6);
 Outcome noh3d();
 
 // mesh_size: the Gmsh target edge length, m; settings: the solver's (end_time is set here);
 // one_body: one slab whose halves meet at the impact speed (no contact between bodies) instead of a
 // flyer striking a target.
-Hugoniot3dResult runHugoniot3d(double mesh_size, otm::Settings settings = {}, bool one_body = true);
+Hugoniot3dResult runHugoniot3d(double mesh_size, MethodSettings settings = {}, bool one_body = true);
 Outcome hugoniot3d();
 
 struct TaylorBarResult {
@@ -100,8 +100,8 @@ struct TaylorBarResult {
   double min_node_distance = 0.0;
 };
 
-// mesh_size in metres; cfl: the factor on the stable time step (otm::Settings::cfl);
-// volume_averaging: otm::Settings::volume_averaging (the verifications keep the default, on).
+// mesh_size in metres; cfl: the factor on the stable time step (SolverSettings::cfl);
+// volume_averaging: OtmOptions::volume_averaging (the verifications keep the default, on).
 TaylorBarResult runTaylorBar(double mesh_size, double cfl = 0.3, bool volume_averaging = true);
 Outcome taylorBar();        // 0.8 mm (long)
 Outcome taylorBarCoarse();  // 1 mm and 1.6 mm (CI)
@@ -121,8 +121,8 @@ struct GriffithResult {
 struct GriffithCase {
   int cells_per_half_crack = 4;  // resolution a/h
   int thickness_cells = 2;       // points through the thickness
-  double erosion_radius = 2.0;   // eps / h (otm::Settings::erosion_radius)
-  bool crack_visibility = true;  // otm::Settings::crack_visibility
+  double erosion_radius = 2.0;   // eps / h (SolverSettings::erosion_radius)
+  bool crack_visibility = true;  // OtmOptions::crack_visibility
 };
 GriffithResult runGriffith(const GriffithCase& c);
 Outcome griffith();

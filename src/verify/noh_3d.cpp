@@ -11,6 +11,7 @@
 // which leaves the density at the centre low: reported as the density within 0.25 r_s, not
 // judged.
 #include "material/library.hpp"
+#include "solver/methods.hpp"
 #include "verify/fixtures.hpp"
 #include "verify/impact_problems.hpp"
 
@@ -25,28 +26,31 @@ constexpr double gamma_gas = 5.0 / 3.0;
 
 }  // namespace
 
-NohResult runNoh3d(double mesh_size, otm::Settings settings, double end_time) {
-  otm::BodySetup ball;
+NohResult runNoh3d(double mesh_size, MethodSettings settings, double end_time) {
+  BodySetup ball;
   ball.name = "gas";
   ball.material = std::make_shared<ImpactMaterial>("ideal-gas-5/3", library::find("ideal-gas-5/3").parameters);
-  ball.mesh.shape = geometry::Sphere{Vec3::Zero(), 1.0};
-  ball.mesh.mesh_size = mesh_size;
-  otm::Model model = otm::buildModel({ball}, {0, 1, 2});
+  geometry::MeshRequest sphere;
+  sphere.shape = geometry::Sphere{Vec3::Zero(), 1.0};
+  sphere.mesh_size = mesh_size;
+  ball.mesh = sphere;
   // Unit speed towards the centre.
-  auto inward = [](const Vec3& x) -> Vec3 {
+  ball.velocity_field = [](const Vec3& x) -> Vec3 {
     const double r = x.norm();
     return r > 0.0 ? Vec3(-x / r) : Vec3(Vec3::Zero());
   };
-  for (LocalIndex a = 0; a < model.nodes.size(); ++a) model.nodes.v[a] = inward(model.nodes.x[a]);
-  for (LocalIndex p = 0; p < model.points.size(); ++p) model.points.v[p] = inward(model.points.x[p]);
+  Problem problem;
+  problem.bodies = {ball};
+  problem.symmetry_axes = {0, 1, 2};
+  problem.settings = settings;
+  problem.settings.solver.end_time = end_time;
+  std::unique_ptr<Method> method = makeMethod(problem);
+  const ParticleState& model = method->state();
 
   NohResult r;
   for (LocalIndex p = 0; p < model.points.size(); ++p) r.initial_energy += 0.5 * model.points.mass[p];
-
-  settings.end_time = end_time;
-  otm::Integrator integrator(model, settings);
-  integrator.initialise();
-  while (!integrator.finished()) integrator.step();
+  method->initialise();
+  while (!method->finished()) method->step();
 
   const double ratio = (gamma_gas + 1.0) / (gamma_gas - 1.0);
   r.reference_density = ratio * ratio * ratio;
@@ -94,9 +98,9 @@ NohResult runNoh3d(double mesh_size, otm::Settings settings, double end_time) {
     }
   }
   // Kinetic, internal and the volume stabilisation's stored energy (docs/theory.md §4).
-  r.energy_error = integrator.energies().total() / r.initial_energy - 1.0;
+  r.energy_error = method->energies().total() / r.initial_energy - 1.0;
   r.points = points.owned;
-  r.steps = integrator.steps();
+  r.steps = method->clock().steps;
   return r;
 }
 

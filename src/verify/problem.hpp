@@ -1,5 +1,5 @@
 #pragma once
-// Built-in verification problems (`kessler verify`, docs/validation.md): each runs a small problem
+// Built-in verification problems (`kessler verify`, docs/validation.md): each check runs a small problem
 // and compares one measured number with an analytic or published reference.
 #include <functional>
 #include <string>
@@ -25,7 +25,7 @@ struct Outcome {
   std::string note;  // how the reference was obtained, resolution, ...
 };
 
-struct Problem {
+struct Check {
   std::string name;
   std::string description;
   std::function<Outcome()> run;
@@ -34,6 +34,6 @@ struct Problem {
 // Fills error and passed from measured, reference and tolerance.
 Outcome compare(Outcome outcome);
 
-const std::vector<Problem>& problems();
+const std::vector<Check>& problems();
 
 }  // namespace kessler::verify

@@ -6,8 +6,8 @@
 
 namespace kessler::verify {
 
-const std::vector<Problem>& problems() {
-  static const std::vector<Problem> all{
+const std::vector<Check>& problems() {
+  static const std::vector<Check> all{
       {"lme-consistency", "LME identities on a distorted point cloud", lmeConsistency},
       {"wave-speed", "longitudinal wave speed in a bar under uniaxial strain", waveSpeed},
       {"momentum", "linear momentum conserved through a collision of two bodies", momentum},

@@ -5,6 +5,7 @@
 // Quarter model (symmetry planes x = 0, y = 0). Pressure from a linear bulk response
 // (polynomial EOS with K1 = K, Gamma0 = 0), as the benchmark is elastic-plastic without an EOS.
 #include "material/impact_material.hpp"
+#include "solver/common/stable_step.hpp"
 #include "verify/fixtures.hpp"
 #include "verify/impact_problems.hpp"
 
@@ -32,41 +33,38 @@ TaylorBarResult runTaylorBar(double mesh_size, double cfl, bool volume_averaging
   p.thermal.specific_heat = 383.0;
   auto material = std::make_shared<ImpactMaterial>("Taylor-bar copper", p);
 
-  otm::BodySetup bar;
-  bar.name = "bar";
-  bar.material = material;
-  bar.mesh.shape = geometry::Cylinder{Vec3::Zero(), Vec3(0, 0, length), radius};
-  bar.mesh.mesh_size = mesh_size;
-  bar.velocity = Vec3(0, 0, -speed);
-  otm::Model model = otm::buildModel({bar}, {0, 1});
-
-  otm::Settings settings;
-  settings.end_time = 80e-6;
-  settings.cfl = cfl;
-  settings.volume_averaging = volume_averaging;
-  settings.walls.push_back(RigidWall{2, 0.0, 1});
-  otm::Integrator integrator(model, settings);
-  integrator.initialise();
-  while (!integrator.finished()) integrator.step();
+  geometry::MeshRequest cylinder;
+  cylinder.shape = geometry::Cylinder{Vec3::Zero(), Vec3(0, 0, length), radius};
+  cylinder.mesh_size = mesh_size;
+  Problem problem;
+  problem.bodies = {BodySetup{.name = "bar", .material = material, .mesh = cylinder, .velocity = Vec3(0, 0, -speed)}};
+  problem.symmetry_axes = {0, 1};
+  problem.settings.solver.end_time = 80e-6;
+  problem.settings.solver.cfl = cfl;
+  problem.settings.otm.volume_averaging = volume_averaging;
+  problem.walls = {RigidWall{2, 0.0, 1}};
+  const std::unique_ptr<Method> method = runToEnd(problem);
+  const NodeStore& nodes = method->nodes();
 
   TaylorBarResult r;
-  for (LocalIndex a = 0; a < model.nodes.owned; ++a) {
-    const Vec3& x = model.nodes.x[a];
+  for (LocalIndex a = 0; a < nodes.owned; ++a) {
+    const Vec3& x = nodes.x[a];
     r.length = std::max(r.length, x[2]);
     if (x[2] < 0.25 * mesh_size) r.footprint_radius = std::max(r.footprint_radius, std::hypot(x[0], x[1]));
   }
-  r.steps = integrator.steps();
-  r.points = model.points.owned;
-  r.dt_initial = integrator.initialStep();
-  r.dt_final = integrator.nextStep();
-  const PointStore& points = model.points;
+  const Clock clock = method->clock();
+  r.steps = clock.steps;
+  r.dt_initial = clock.dt_initial;
+  r.dt_final = clock.dt_next;
+  const PointStore& points = method->state().points;
+  r.points = points.owned;
   for (LocalIndex q = 0; q < points.owned; ++q)
     if (points.x[q][2] < mesh_size)
       r.point_footprint_radius = std::max(r.point_footprint_radius, std::hypot(points.x[q][0], points.x[q][1]));
   double limit = std::numeric_limits<double>::infinity();
   for (LocalIndex q = 0; q < points.owned; ++q) {
     if (points.broken[q]) continue;
-    const double ratio = otm::stepLength(model, q) / points.sound_speed[q];
+    const double ratio = method->stepLength(q) / points.sound_speed[q];
     if (ratio >= limit) continue;
     limit = ratio;
     r.min_stretch = smallestStretch(points.F[q]);
@@ -75,9 +73,9 @@ TaylorBarResult runTaylorBar(double mesh_size, double cfl, bool volume_averaging
     r.limiting_h0 = points.spacing0[q];
   }
   r.min_node_distance = std::numeric_limits<double>::infinity();
-  for (LocalIndex a = 0; a < model.nodes.owned; ++a)
-    for (LocalIndex b = a + 1; b < model.nodes.owned; ++b)
-      r.min_node_distance = std::min(r.min_node_distance, (model.nodes.x[a] - model.nodes.x[b]).norm());
+  for (LocalIndex a = 0; a < nodes.owned; ++a)
+    for (LocalIndex b = a + 1; b < nodes.owned; ++b)
+      r.min_node_distance = std::min(r.min_node_distance, (nodes.x[a] - nodes.x[b]).norm());
   return r;
 }
 

@@ -3,7 +3,7 @@
 // The run loop (app/simulation.cpp) owns output, checkpoints, restart, signals, progress, history
 // and the summary; a method owns its discretisation and advances the shared particle state.
 // A new method implements this interface in its own folder beside solver/otm/ and is added to
-// the factory (app/methods.cpp).
+// the factory (solver/methods.cpp).
 #include "core/timer.hpp"
 #include "particles/store.hpp"
 #include "solver/common/energies.hpp"
@@ -55,6 +55,12 @@ class Method {
   virtual std::vector<std::pair<std::string, double>> sizes() const = 0;
   // Lines for the end-of-run report (OTM: points torn from their bodies); none if nothing to say.
   virtual std::vector<std::string> notes() const = 0;
+  // The length by which the stable step measures point p (solver/common/stable_step.hpp): the
+  // step is cfl times the smallest stepLength / c over the points that are not debris.
+  virtual double stepLength(LocalIndex p) const = 0;
+  // The pressure the method's forces add to point p's material pressure (OTM: the volume
+  // stabilisation's, docs/theory.md §4), Pa; 0 for a method that adds none.
+  virtual double addedPressure(LocalIndex /*p*/) const { return 0.0; }
 
   // The method's own part of a checkpoint: everything beyond the shared state that a restart
   // needs to continue bit for bit (its discretisation, its clock). load() runs on a method built

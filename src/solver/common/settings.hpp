@@ -1,7 +1,7 @@
 #pragma once
 // The deck's solver section (docs/deck.md, "solver"), as values: the keys every method reads, and
 // each method's own block (`solver.otm`). The deck parser (io/) fills them; a method's settings
-// are built from them by the factory (app/methods.cpp). The solver never sees the deck itself.
+// are built from them by the factory (solver/methods.cpp). The solver never sees the deck itself.
 namespace kessler {
 
 // What every method reads.
@@ -18,6 +18,10 @@ struct SolverSettings {
   // before it was released) strikes it as matter. Without it, debris passes through every body (a
   // Whipple shield's rear wall would never be hit).
   bool debris_contact = true;
+  // Not deck keys (the theory fixes them; studies vary them):
+  // eigenerosion (Pandolfi & Ortiz 2012; docs/theory.md §8): the radius of the ball B_eps as a
+  // multiple of the point spacing h, also the ball over which released debris takes its velocity.
+  double erosion_radius = 2.0;
 };
 
 // OTM's own keys, `solver.otm` (docs/theory.md §2–4, §8).
@@ -44,6 +48,25 @@ struct OtmOptions {
   // erosion of a shocked impact target it leaves points one-sided neighbourhoods and the run
   // becomes unstable (measured on examples/sphere-plate.yaml).
   bool crack_visibility = false;
+  // Not deck keys (the theory fixes them; studies vary them):
+  // the volume averaging's stabilisation: a pressure -alpha rho c^2 d on the volume strain d that
+  // the averaging took away (PointStore::volume_defect), alpha times the point's longitudinal
+  // modulus, added to each point's own stress in the forces. With alpha = 1 the nodes feel each
+  // point's whole volumetric stiffness (the averaged pressure on what the average keeps, the
+  // stabilisation on what it takes away), so the averaged update has no zero-energy mode (the
+  // crushed axis of a plastic Taylor bar) and no soft one, while the state the material sees
+  // (density, pressure, heating) stays the patch average (docs/theory.md §4).
+  double volume_stabilisation = 1.0;
+  // The defect of an intact point relaxes with the time constant of this many wave transits of its
+  // spacing, tau = k h / c (0: never), the energy it stored becomes heat, and the stored energy
+  // follows the stiffness (docs/theory.md §4).
+  double volume_relaxation = 10.0;
+};
+
+// A method's settings: what every method reads and each method's own block.
+struct MethodSettings {
+  SolverSettings solver;
+  OtmOptions otm;
 };
 
 }  // namespace kessler

@@ -1,10 +1,63 @@
 #include "solver/otm/otm_method.hpp"
 
 #include "core/error.hpp"
+#include "solver/otm/setup.hpp"
+#include "solver/otm/volume_patch.hpp"
 
 #include <fmt/format.h>
 
 namespace kessler::otm {
+
+OtmMethod::OtmMethod(Model model, const Problem& problem)
+    : OtmMethod(std::move(model), settingsFor(problem.settings, problem.walls)) {
+  for (const PlaneConstraint& plane : problem.planes) {
+    if (!plane.history) continue;
+    History h{plane.axis, plane.history, {}, {}};
+    for (const LocalIndex a : nodesOnPlane(model_, plane.axis, plane.offset, plane.tolerance, plane.body))
+      h.node_ids.push_back(model_.nodes.id[a]);
+    histories_.push_back(std::move(h));
+  }
+}
+
+void OtmMethod::locateHistories() {
+  if (histories_.empty()) return;
+  std::vector<LocalIndex> index;
+  for (LocalIndex a = 0; a < model_.nodes.size(); ++a) {
+    const auto id = static_cast<std::size_t>(model_.nodes.id[a]);
+    if (index.size() <= id) index.resize(id + 1, -1);
+    index[id] = a;
+  }
+  for (History& h : histories_) {
+    h.nodes.clear();
+    for (const Index id : h.node_ids) {
+      KESSLER_VERIFY(static_cast<std::size_t>(id) < index.size() && index[static_cast<std::size_t>(id)] >= 0,
+                     "prescribed velocity history: node {} is not in the store", id);
+      h.nodes.push_back(index[static_cast<std::size_t>(id)]);
+    }
+  }
+}
+
+void OtmMethod::initialise() {
+  integrator_.initialise();
+  locateHistories();
+}
+
+void OtmMethod::step() {
+  // The histories at the middle of the step.
+  for (const History& h : histories_) {
+    const double v = h.velocity(integrator_.time() + 0.5 * integrator_.nextStep());
+    for (const LocalIndex a : h.nodes) model_.nodes.prescribed_v[a][h.axis] = v;
+  }
+  integrator_.step();
+}
+
+double OtmMethod::addedPressure(LocalIndex p) const {
+  const Settings& s = integrator_.settings();
+  const double alpha = s.volume_averaging ? s.volume_stabilisation : 0.0;
+  const BodyInfo& body = model_.bodies[static_cast<std::size_t>(model_.points.body[p])];
+  return stabilisationPressure(model_.points, p, alpha,
+                               model_.materials[static_cast<std::size_t>(body.material)]->tensileLimit());
+}
 
 void OtmMethod::check(double initial_total_energy) {
   const StepInfo at{integrator_.steps(), integrator_.time(), integrator_.nextStep(), integrator_.initialStep()};
@@ -92,6 +145,7 @@ void OtmMethod::load(const StateReader& in) {
   integrator_.restore({in.doubleScalar("integrator_time"), in.doubleScalar("integrator_dt_last"),
                        in.doubleScalar("integrator_dt_next"), in.doubleScalar("integrator_dt_initial"),
                        in.intScalar("integrator_steps"), in.doubleScalar("integrator_stabilisation_energy")});
+  locateHistories();
 }
 
 }  // namespace kessler::otm

@@ -1,6 +1,7 @@
 #pragma once
 // OTM as a Method (solver/common/method.hpp): the model, its integrator and its health checks.
 #include "solver/common/method.hpp"
+#include "solver/common/problem.hpp"
 #include "solver/otm/diagnostics.hpp"
 #include "solver/otm/integrator.hpp"
 #include "solver/otm/model.hpp"
@@ -12,12 +13,14 @@ class OtmMethod final : public Method {
  public:
   OtmMethod(Model model, const Settings& settings)
       : model_(std::move(model)), integrator_(model_, settings), diagnostics_(settings) {}
+  // For a problem's model (buildModel): its settings, walls and velocity histories.
+  OtmMethod(Model model, const Problem& problem);
   OtmMethod(const OtmMethod&) = delete;
   OtmMethod& operator=(const OtmMethod&) = delete;
 
   const char* name() const override { return "otm"; }
-  void initialise() override { integrator_.initialise(); }
-  void step() override { integrator_.step(); }
+  void initialise() override;
+  void step() override;
   void check(double initial_total_energy) override;
   bool finished() const override { return integrator_.finished(); }
   double endTime() const override { return integrator_.settings().end_time; }
@@ -28,6 +31,8 @@ class OtmMethod final : public Method {
   const NodeStore& nodes() const override { return model_.nodes; }
   std::vector<std::pair<std::string, double>> sizes() const override;
   std::vector<std::string> notes() const override;
+  double stepLength(LocalIndex p) const override { return otm::stepLength(model_, p); }
+  double addedPressure(LocalIndex p) const override;
   void save(StateWriter& out) const override;
   void load(const StateReader& in) override;
 
@@ -37,9 +42,20 @@ class OtmMethod final : public Method {
   const Integrator& integrator() const { return integrator_; }
 
  private:
+  // A plane whose nodes' prescribed velocity follows a history (PlaneConstraint::history).
+  struct History {
+    int axis = 0;
+    std::function<double(double)> velocity;
+    std::vector<Index> node_ids;    // the plane's nodes, found when the model is built
+    std::vector<LocalIndex> nodes;  // and where they are now (locateHistories)
+  };
+  // The histories' nodes in the store's current order (after the Morton sort or a restart).
+  void locateHistories();
+
   Model model_;
   Integrator integrator_;  // holds a reference to model_
   Diagnostics diagnostics_;
+  std::vector<History> histories_;
 };
 
 }  // namespace kessler::otm

@@ -64,33 +64,52 @@ void constrainNode(Model& model, LocalIndex node, int axis, double velocity) {
   model.nodes.prescribed_v[node][axis] = velocity;
 }
 
-LocalIndex constrainPlane(Model& model, int axis, double offset, double tolerance, double velocity, int body) {
-  LocalIndex count = 0;
+std::vector<LocalIndex> nodesOnPlane(const Model& model, int axis, double offset, double tolerance, int body) {
+  std::vector<LocalIndex> on;
   for (LocalIndex a = 0; a < model.nodes.size(); ++a) {
     if (body >= 0 && model.nodes.body[a] != body) continue;
     if (std::abs(model.nodes.x[a][axis] - offset) > tolerance) continue;
-    constrainNode(model, a, axis, velocity);
-    ++count;
+    on.push_back(a);
   }
-  return count;
+  return on;
 }
 
-Model buildModel(const std::vector<BodySetup>& bodies, const std::vector<int>& symmetry_axes) {
+LocalIndex constrainPlane(Model& model, int axis, double offset, double tolerance, double velocity, int body) {
+  const std::vector<LocalIndex> on = nodesOnPlane(model, axis, offset, tolerance, body);
+  for (const LocalIndex a : on) constrainNode(model, a, axis, velocity);
+  return static_cast<LocalIndex>(on.size());
+}
+
+Model buildModel(const Problem& problem) {
   Model model;
-  for (const BodySetup& setup : bodies) {
-    geometry::MeshRequest request = setup.mesh;
-    request.symmetry_axes = symmetry_axes;
-    const geometry::TetMesh mesh = geometry::meshShape(request);
-    const geometry::Discretisation disc = geometry::discretise(mesh);
-    const LocalIndex first = model.nodes.size();
+  for (const BodySetup& setup : problem.bodies) {
+    const LocalIndex first_node = model.nodes.size(), first_point = model.points.size();
+    const auto* request = std::get_if<geometry::MeshRequest>(&setup.mesh);
+    geometry::Discretisation meshed;
+    if (request != nullptr) {
+      geometry::MeshRequest clipped = *request;
+      clipped.symmetry_axes = problem.symmetry_axes;
+      meshed = geometry::discretise(geometry::meshShape(clipped));
+    }
+    const geometry::Discretisation& disc = request != nullptr ? meshed : std::get<geometry::Discretisation>(setup.mesh);
     const int body = addBody(model, setup.name, setup.material, disc, setup.velocity);
-    for (LocalIndex local : geometry::selectNodes(setup.mesh.shape, disc.nodes, setup.fixed))
-      for (int axis = 0; axis < 3; ++axis) constrainNode(model, first + local, axis);
+    if (setup.velocity_field) {
+      for (LocalIndex a = first_node; a < model.nodes.size(); ++a)
+        model.nodes.v[a] = setup.velocity_field(model.nodes.x[a]);
+      for (LocalIndex p = first_point; p < model.points.size(); ++p)
+        model.points.v[p] = setup.velocity_field(model.points.x[p]);
+    }
+    if (request == nullptr) continue;
+    for (LocalIndex local : geometry::selectNodes(request->shape, disc.nodes, setup.fixed))
+      for (int axis = 0; axis < 3; ++axis) constrainNode(model, first_node + local, axis);
     // Nodes on a symmetry plane (Gmsh puts them on the clipping plane up to round-off) keep a
     // zero normal velocity; a body clear of the plane has none.
-    for (int axis : symmetry_axes) constrainPlane(model, axis, 0.0, 1e-6 * setup.mesh.mesh_size, 0.0, body);
+    for (int axis : problem.symmetry_axes) constrainPlane(model, axis, 0.0, 1e-6 * request->mesh_size, 0.0, body);
     log::info("  body {:<14} {:>9} nodes {:>9} points", setup.name, disc.nodes.size(), disc.points.size());
   }
+  for (const PlaneConstraint& plane : problem.planes)
+    constrainPlane(model, plane.axis, plane.offset, plane.tolerance, plane.velocity, plane.body);
+  if (problem.prepare) problem.prepare(model);
   return model;
 }
 
