@@ -19,11 +19,12 @@ namespace {
 // doubles without padding, so a run of Vec3 is a row-major n x 3 array.
 static_assert(sizeof(Vec3) == 3 * sizeof(double));
 
-template <class T>
-std::span<const T> ownedPrefix(const std::vector<T>& values, LocalIndex owned, const char* name) {
+template <class Values>
+auto ownedPrefix(const Values& values, LocalIndex owned, const char* name) {
+  using T = typename Values::value_type;
   KESSLER_VERIFY(owned >= 0 && static_cast<std::size_t>(owned) <= values.size(),
                  "field output: '{}' holds {} values, fewer than the {} owned", name, values.size(), owned);
-  return {values.data(), static_cast<std::size_t>(owned)};
+  return std::span<const T>(values.data(), static_cast<std::size_t>(owned));
 }
 
 std::span<const double> flatten(std::span<const Vec3> vectors) {
@@ -106,7 +107,7 @@ void writePoints(Hdf5Writer& h5, const std::string& file, const PointStore& poin
   out.scalar("id", ownedPrefix(points.id, points.owned, "points.id"));
 }
 
-void writeNodes(Hdf5Writer& h5, const std::string& file, const NodeStore& nodes, XdmfGrid& grid) {
+void writeNodes(Hdf5Writer& h5, const std::string& file, const NodeCloud& nodes, XdmfGrid& grid) {
   const auto n = static_cast<std::size_t>(std::max(nodes.owned, LocalIndex{0}));
   GridWriter out(h5, file, "nodes", n, grid);
   out.geometry(ownedPrefix(nodes.x, nodes.owned, "nodes.x"));
@@ -134,7 +135,7 @@ FieldWriter::FieldWriter(std::filesystem::path dir) : dir_(std::move(dir)) {
     throw Error(fmt::format("cannot create the output folder '{}': {}", (dir_ / "fields").string(), error.message()));
 }
 
-void FieldWriter::write(long step, double time, const NodeStore& nodes, const PointStore& points) {
+void FieldWriter::write(long step, double time, const NodeCloud& nodes, const PointStore& points) {
   KESSLER_VERIFY(step >= 0, "field output: negative step {}", step);
   // XDMF paths are relative to the XDMF files in dir_, with '/' on every platform.
   const std::string file = fmt::format("fields/fields_{:08d}.h5", step);

@@ -5,6 +5,7 @@
 // all earlier outputs readable and both XDMF files consistent with the HDF5 files on disk.
 #include "io/xdmf.hpp"
 #include "particles/store.hpp"
+#include "solver/common/node_cloud.hpp"
 
 #include <filesystem>
 #include <vector>
@@ -18,7 +19,7 @@ class FieldWriter {
 
   // Writes the owned points [0, points.owned) and nodes [0, nodes.owned) at `time` (s) and
   // rewrites both XDMF files. Writing a step already written replaces that output.
-  void write(long step, double time, const NodeStore& nodes, const PointStore& points);
+  void write(long step, double time, const NodeCloud& nodes, const PointStore& points);
 
   const std::filesystem::path& directory() const { return dir_; }
 

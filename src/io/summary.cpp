@@ -36,7 +36,7 @@ void writeSummary(const std::filesystem::path& file, const RunRecord& record, co
     volume[b] += model.points.volume0[p];
     ++points[b];
   }
-  const NodeStore& node_store = method.nodes();
+  const NodeCloud node_store = method.nodes();
   for (LocalIndex a = 0; a < node_store.owned; ++a) ++nodes[static_cast<std::size_t>(node_store.body[a])];
   nlohmann::json bodies = nlohmann::json::array();
   for (std::size_t b = 0; b < nb; ++b) {

@@ -1,63 +1,24 @@
 #include "particles/store.hpp"
 
 #include "core/error.hpp"
+#include "particles/store_fields.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <type_traits>
 
 namespace kessler {
 
-namespace {
-
-template <typename T>
-void permuteArray(std::vector<T>& values, const std::vector<LocalIndex>& order, std::vector<T>& scratch) {
-  KESSLER_VERIFY(values.size() == order.size(), "permutation of {} entries for an array of {}", order.size(),
-                 values.size());
-  scratch.resize(order.size());
-  for (std::size_t i = 0; i < order.size(); ++i) scratch[i] = values[order[i]];
-  values.swap(scratch);
-}
-
-// Tripwires: an array added to a store but not to its fields() list would be lost by a
+// Tripwire: an array added to the store but not to its fields() list would be lost by a
 // permutation, a resize or a restart (the last term: `owned`, padded).
 static_assert(sizeof(PointStore) == PointStore::field_count * sizeof(std::vector<double>) + sizeof(std::int64_t),
               "PointStore gained or lost an array: add it to PointStore::fields() and field_count");
-static_assert(sizeof(NodeStore) == NodeStore::field_count * sizeof(std::vector<double>) + sizeof(std::int64_t),
-              "NodeStore gained or lost an array: add it to NodeStore::fields() and field_count");
-
-template <class Store>
-void permuteStore(Store& store, const std::vector<LocalIndex>& order) {
-  KESSLER_VERIFY(order.size() == store.x.size(), "permutation of {} entries for {} particles", order.size(),
-                 store.x.size());
-  Store::fields(store, [&](const char*, auto& values, const auto&) {
-    std::remove_reference_t<decltype(values)> scratch;
-    permuteArray(values, order, scratch);
-  });
-}
-
-template <class Store>
-void resizeStore(Store& store, std::size_t n) {
-  Store::fields(store, [&](const char*, auto& values, const auto& fresh) { values.resize(n, fresh); });
-  store.owned = static_cast<LocalIndex>(n);
-}
-
-}  // namespace
-
-void NodeStore::permute(const std::vector<LocalIndex>& order) {
-  permuteStore(*this, order);
-}
 
 void PointStore::permute(const std::vector<LocalIndex>& order) {
-  permuteStore(*this, order);
-}
-
-void NodeStore::resize(std::size_t n) {
-  resizeStore(*this, n);
+  permuteFields(*this, order);
 }
 
 void PointStore::resize(std::size_t n) {
-  resizeStore(*this, n);
+  resizeFields(*this, n);
 }
 
 double PointStore::spacing(LocalIndex p) const {

@@ -29,7 +29,7 @@ Outcome contactGap() {
   std::unique_ptr<Method> method = makeMethod(problem);
   method->initialise();
   const PointStore& points = method->state().points;
-  const NodeStore& nodes = method->nodes();
+  const NodeCloud nodes = method->nodes();
 
   double h_max = 0.0;
   for (LocalIndex p = 0; p < points.owned; ++p) h_max = std::max(h_max, points.spacing(p));

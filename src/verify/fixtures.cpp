@@ -43,7 +43,7 @@ std::unique_ptr<Method> runToEnd(const Problem& problem, const std::function<boo
 namespace {
 
 template <typename T>
-long differing(const std::vector<T>& a, const std::vector<T>& b) {
+long differing(std::span<const T> a, std::span<const T> b) {
   if (a.size() != b.size()) return static_cast<long>(std::max(a.size(), b.size()));
   long count = 0;
   for (std::size_t i = 0; i < a.size(); ++i) count += std::memcmp(&a[i], &b[i], sizeof(T)) != 0;
@@ -54,9 +54,11 @@ long differing(const std::vector<T>& a, const std::vector<T>& b) {
 
 long countDifferences(const Method& a, const Method& b) {
   const PointStore &p = a.state().points, &q = b.state().points;
-  const NodeStore &m = a.nodes(), &n = b.nodes();
-  return differing(m.x, n.x) + differing(m.v, n.v) + differing(p.x, q.x) + differing(p.v, q.v) + differing(p.F, q.F) +
-         differing(p.stress, q.stress) + differing(p.volume, q.volume);
+  const NodeCloud m = a.nodes(), n = b.nodes();
+  auto all = [](const auto& values) { return std::span(values); };
+  return differing(m.x, n.x) + differing(m.v, n.v) + differing(all(p.x), all(q.x)) + differing(all(p.v), all(q.v)) +
+         differing(all(p.F), all(q.F)) + differing(all(p.stress), all(q.stress)) +
+         differing(all(p.volume), all(q.volume));
 }
 
 }  // namespace kessler::verify

@@ -44,7 +44,7 @@ TaylorBarResult runTaylorBar(double mesh_size, double cfl, bool volume_averaging
   problem.settings.otm.volume_averaging = volume_averaging;
   problem.walls = {RigidWall{2, 0.0, 1}};
   const std::unique_ptr<Method> method = runToEnd(problem);
-  const NodeStore& nodes = method->nodes();
+  const NodeCloud nodes = method->nodes();
 
   TaylorBarResult r;
   for (LocalIndex a = 0; a < nodes.owned; ++a) {

@@ -7,6 +7,7 @@
 #include "core/timer.hpp"
 #include "particles/store.hpp"
 #include "solver/common/energies.hpp"
+#include "solver/common/node_cloud.hpp"
 #include "solver/common/particle_state.hpp"
 #include "solver/common/state_archive.hpp"
 
@@ -50,7 +51,7 @@ class Method {
   virtual const ParticleState& state() const = 0;
   // The method's own node cloud, written to nodes.xdmf beside the points (empty for a method
   // without nodes).
-  virtual const NodeStore& nodes() const = 0;
+  virtual NodeCloud nodes() const = 0;
   // Figures of the problem's size beyond points and nodes, for summary.json (OTM: mean_neighbours).
   virtual std::vector<std::pair<std::string, double>> sizes() const = 0;
   // Lines for the end-of-run report (OTM: points torn from their bodies); none if nothing to say.

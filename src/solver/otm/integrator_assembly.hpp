@@ -8,6 +8,7 @@
 // number of threads.
 #include "particles/store.hpp"
 #include "solver/otm/connectivity.hpp"
+#include "solver/otm/node_store.hpp"
 
 #include <vector>
 

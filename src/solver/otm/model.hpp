@@ -4,6 +4,7 @@
 #include "particles/store.hpp"
 #include "solver/common/particle_state.hpp"
 #include "solver/otm/connectivity.hpp"
+#include "solver/otm/node_store.hpp"
 
 namespace kessler::otm {
 

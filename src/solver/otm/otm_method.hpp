@@ -28,7 +28,7 @@ class OtmMethod final : public Method {
   Energies energies() const override { return integrator_.energies(); }
   const PhaseTimers& timers() const override { return integrator_.timers(); }
   const ParticleState& state() const override { return model_; }
-  const NodeStore& nodes() const override { return model_.nodes; }
+  NodeCloud nodes() const override { return model_.nodes.cloud(); }
   std::vector<std::pair<std::string, double>> sizes() const override;
   std::vector<std::string> notes() const override;
   double stepLength(LocalIndex p) const override { return otm::stepLength(model_, p); }

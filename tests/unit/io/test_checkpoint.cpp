@@ -80,7 +80,7 @@ long differing(const std::vector<T>& a, const std::vector<T>& b) {
 
 long differences(const otm::Model& a, const otm::Model& b) {
   const PointStore &p = a.points, &q = b.points;
-  const NodeStore &m = a.nodes, &n = b.nodes;
+  const otm::NodeStore &m = a.nodes, &n = b.nodes;
   return differing(p.id, q.id) + differing(p.body, q.body) + differing(p.x, q.x) + differing(p.v, q.v) +
          differing(p.mass, q.mass) + differing(p.volume, q.volume) + differing(p.volume0, q.volume0) +
          differing(p.spacing0, q.spacing0) + differing(p.F, q.F) + differing(p.dF, q.dF) +
@@ -239,7 +239,7 @@ TEST_F(CheckpointTest, RefusesWhatIsNotACompleteCheckpointOfThisRun) {
   EXPECT_NE(errorOf(file, {std::make_shared<NeoHookean>("rubber", p)}).find("material 'al' is not in the run's deck"),
             std::string::npos);
   // A field output is an HDF5 file, but not a checkpoint.
-  FieldWriter(dir_).write(0, 0.0, model.nodes, model.points);
+  FieldWriter(dir_).write(0, 0.0, model.nodes.cloud(), model.points);
   EXPECT_NE(errorOf(dir_ / "fields/fields_00000000.h5", {material_}).find("is not a Kessler checkpoint"),
             std::string::npos);
   // A file cut short, as a copy interrupted by a full disk would leave it.

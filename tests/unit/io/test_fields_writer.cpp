@@ -3,6 +3,7 @@
 #include "io/fields_writer.hpp"
 
 #include "core/error.hpp"
+#include "solver/otm/node_store.hpp"
 
 #include <gtest/gtest.h>
 #include <hdf5.h>
@@ -23,7 +24,7 @@ namespace fs = std::filesystem;
 
 // 5 owned points and 4 owned nodes, each followed by one ghost that must not be written.
 struct Stores {
-  NodeStore nodes;
+  otm::NodeStore nodes;
   PointStore points;
 };
 
@@ -144,8 +145,8 @@ class FieldWriterTest : public ::testing::Test {
   void writeTwo() {
     FieldWriter writer(dir_ / "run");
     const Stores first = makeStores(0.0), second = makeStores(1.0);
-    writer.write(0, 0.0, first.nodes, first.points);
-    writer.write(25, 2.5e-6, second.nodes, second.points);
+    writer.write(0, 0.0, first.nodes.cloud(), first.points);
+    writer.write(25, 2.5e-6, second.nodes.cloud(), second.points);
   }
 
   fs::path dir_;
@@ -290,9 +291,9 @@ TEST_F(FieldWriterTest, XdmfListsEveryOutputWithMatchingDatasets) {
 TEST_F(FieldWriterTest, RewritingAStepReplacesIt) {
   FieldWriter writer(dir_);
   const Stores a = makeStores(0.0), b = makeStores(3.0);
-  writer.write(1, 1e-6, a.nodes, a.points);
-  writer.write(2, 2e-6, a.nodes, a.points);
-  writer.write(2, 2e-6, b.nodes, b.points);
+  writer.write(1, 1e-6, a.nodes.cloud(), a.points);
+  writer.write(2, 2e-6, a.nodes.cloud(), a.points);
+  writer.write(2, 2e-6, b.nodes.cloud(), b.points);
   checkXdmf(dir_ / "points.xdmf", {1e-6, 2e-6}, 5);
   EXPECT_EQ(read<double>(dir_ / "fields" / "fields_00000002.h5", "/nodes/position", H5T_NATIVE_DOUBLE),
             flat(b.nodes.x, 4));
@@ -300,7 +301,7 @@ TEST_F(FieldWriterTest, RewritingAStepReplacesIt) {
 
 TEST_F(FieldWriterTest, EmptyStoresWriteEmptyGrids) {
   FieldWriter writer(dir_);
-  writer.write(0, 0.0, NodeStore{}, PointStore{});
+  writer.write(0, 0.0, NodeCloud{}, PointStore{});
   checkXdmf(dir_ / "points.xdmf", {0.0}, 0);
   checkXdmf(dir_ / "nodes.xdmf", {0.0}, 0);
 }
@@ -319,13 +320,13 @@ TEST_F(FieldWriterTest, CannotCreateFolderNamesIt) {
 TEST_F(FieldWriterTest, Hdf5FailureThrowsQuietlyAndKeepsEarlierOutputs) {
   FieldWriter writer(dir_);
   const Stores s = makeStores(0.0);
-  writer.write(1, 1e-6, s.nodes, s.points);
+  writer.write(1, 1e-6, s.nodes.cloud(), s.points);
   // A folder where the temporary file should go makes H5Fcreate fail.
   fs::create_directories(dir_ / "fields" / "fields_00000002.h5.tmp");
   std::ofstream(dir_ / "fields" / "fields_00000002.h5.tmp" / "keep") << "x";
   ::testing::internal::CaptureStderr();
   try {
-    writer.write(2, 2e-6, s.nodes, s.points);
+    writer.write(2, 2e-6, s.nodes.cloud(), s.points);
     ADD_FAILURE() << "expected an error";
   } catch (const Error& e) {
     const std::string what = e.what();
@@ -337,7 +338,7 @@ TEST_F(FieldWriterTest, Hdf5FailureThrowsQuietlyAndKeepsEarlierOutputs) {
   checkXdmf(dir_ / "points.xdmf", {1e-6}, 5);
   // The writer is still usable once the obstacle is gone.
   fs::remove_all(dir_ / "fields" / "fields_00000002.h5.tmp");
-  writer.write(2, 2e-6, s.nodes, s.points);
+  writer.write(2, 2e-6, s.nodes.cloud(), s.points);
   checkXdmf(dir_ / "points.xdmf", {1e-6, 2e-6}, 5);
 }
 
@@ -345,7 +346,7 @@ TEST_F(FieldWriterTest, StoreShorterThanOwnedIsAnError) {
   FieldWriter writer(dir_);
   Stores s = makeStores(0.0);
   s.points.temperature.resize(2);
-  EXPECT_THROW(writer.write(0, 0.0, s.nodes, s.points), Error);
+  EXPECT_THROW(writer.write(0, 0.0, s.nodes.cloud(), s.points), Error);
   EXPECT_FALSE(fs::exists(dir_ / "points.xdmf"));
   EXPECT_FALSE(fs::exists(dir_ / "fields" / "fields_00000000.h5"));
   EXPECT_FALSE(fs::exists(dir_ / "fields" / "fields_00000000.h5.tmp"));

@@ -10,6 +10,7 @@
 
 #include <cstring>
 #include <memory>
+#include <span>
 
 namespace kessler::otm {
 namespace {
@@ -29,7 +30,7 @@ Settings settings() {
 
 // Bitwise equality of two arrays of trivially copyable values.
 template <class T>
-bool same(const std::vector<T>& a, const std::vector<T>& b) {
+bool same(std::span<const T> a, std::span<const T> b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
 }
 
@@ -59,9 +60,9 @@ TEST(OtmMethod, StepsExactlyAsItsIntegrator) {
   EXPECT_EQ(a.kinetic, b.kinetic);
   EXPECT_EQ(a.internal, b.internal);
   EXPECT_EQ(a.momentum, b.momentum);
-  EXPECT_TRUE(same(method->state().points.x, reference_model.points.x));
-  EXPECT_TRUE(same(method->state().points.stress, reference_model.points.stress));
-  EXPECT_TRUE(same(method->nodes().x, reference_model.nodes.x));
+  EXPECT_TRUE(same(std::span(method->state().points.x), std::span<const Vec3>(reference_model.points.x)));
+  EXPECT_TRUE(same(std::span(method->state().points.stress), std::span<const Mat3>(reference_model.points.stress)));
+  EXPECT_TRUE(same(method->nodes().x, std::span<const Vec3>(reference_model.nodes.x)));
   EXPECT_EQ(method->state().bodies.size(), 1u);
   EXPECT_EQ(method->timers().totals().size(), reference.timers().totals().size());
 }
