@@ -31,7 +31,8 @@ struct BodySetup {
 
 // The carriers of body `body` (-1: of every body) that lie on the plane x[axis] = offset, within
 // `tolerance` (infinity: every carrier), have their velocity component along the axis prescribed:
-// `velocity`, or history(t) at the middle of each step if a history is given.
+// `velocity`, or history(t) at the middle of each step if a history is given (verification
+// problems; a method restored from a checkpoint does not take up a history).
 struct PlaneConstraint {
   int axis = 0;
   double offset = 0.0;
