@@ -133,10 +133,8 @@ namespace {
 // The links between the store's points (model.adjacency holds ids), each pair ordered; a link to
 // a point the store does not hold has -1 at that end.
 std::vector<std::array<LocalIndex, 2>> localLinks(const ParticleState& model) {
-  const std::vector<LocalIndex> index = indexById(model.points);
-  auto local = [&](Index id) {
-    return id >= 0 && static_cast<std::size_t>(id) < index.size() ? index[static_cast<std::size_t>(id)] : -1;
-  };
+  const IdIndex index(model.points.id);
+  auto local = [&](Index id) { return index.find(id); };
   std::vector<std::array<LocalIndex, 2>> links(model.adjacency.size());
   for (std::size_t k = 0; k < links.size(); ++k) {
     const LocalIndex a = local(model.adjacency[k][0]), b = local(model.adjacency[k][1]);

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <array>
+#include <optional>
 #include <span>
 
 namespace kessler::io {
@@ -267,10 +268,14 @@ Restored readCheckpoint(const std::filesystem::path& file, const std::vector<Mat
     readArray(h5, "/adjacency/pairs", model.adjacency, links);
   }
   readArray(h5, "/adjacency/length0", model.adjacency_length0, links);
-  const std::vector<LocalIndex> index = indexById(model.points);
+  std::optional<IdIndex> index;
+  try {
+    index.emplace(model.points.id);
+  } catch (const Error& e) {
+    h5.fail(fmt::format("use /points/id: {}", e.what()));
+  }
   for (const auto& [i, j] : model.adjacency)
-    if (i < 0 || i >= j || static_cast<std::size_t>(j) >= index.size() || index[static_cast<std::size_t>(i)] < 0 ||
-        index[static_cast<std::size_t>(j)] < 0)
+    if (i >= j || index->find(i) < 0 || index->find(j) < 0)
       h5.fail(fmt::format("use /adjacency/pairs: pair ({}, {}) is not two ordered ids of stored points", i, j));
 
   const std::vector<std::uint8_t> meta = h5.read<std::uint8_t>("/run/meta");

@@ -25,15 +25,35 @@ double PointStore::spacing(LocalIndex p) const {
   return spacing0[p] * std::cbrt(volume[p] / volume0[p]);
 }
 
-std::vector<LocalIndex> indexById(const PointStore& points) {
+IdIndex::IdIndex(std::span<const Index> ids) {
   Index largest = -1;
-  for (const Index id : points.id) largest = std::max(largest, id);
-  std::vector<LocalIndex> index(static_cast<std::size_t>(largest + 1), -1);
-  for (LocalIndex p = 0; p < points.size(); ++p) {
-    KESSLER_VERIFY(points.id[p] >= 0, "point {} has the negative id {}", p, points.id[p]);
-    index[static_cast<std::size_t>(points.id[p])] = p;
+  for (const Index id : ids) {
+    KESSLER_VERIFY(id >= 0, "negative id {}", id);
+    largest = std::max(largest, id);
   }
-  return index;
+  const auto n = static_cast<LocalIndex>(ids.size());
+  if (largest < 4 * static_cast<Index>(ids.size()) + 1024) {
+    by_id_.assign(static_cast<std::size_t>(largest + 1), -1);
+    for (LocalIndex i = 0; i < n; ++i) {
+      LocalIndex& slot = by_id_[static_cast<std::size_t>(ids[static_cast<std::size_t>(i)])];
+      KESSLER_VERIFY(slot < 0, "id {} appears twice (entries {} and {})", ids[static_cast<std::size_t>(i)], slot, i);
+      slot = i;
+    }
+    return;
+  }
+  sorted_.reserve(ids.size());
+  for (LocalIndex i = 0; i < n; ++i) sorted_.emplace_back(ids[static_cast<std::size_t>(i)], i);
+  std::sort(sorted_.begin(), sorted_.end());
+  for (std::size_t k = 1; k < sorted_.size(); ++k)
+    KESSLER_VERIFY(sorted_[k].first != sorted_[k - 1].first, "id {} appears twice (entries {} and {})",
+                   sorted_[k].first, sorted_[k - 1].second, sorted_[k].second);
+}
+
+LocalIndex IdIndex::find(Index id) const {
+  if (sorted_.empty())
+    return id >= 0 && static_cast<std::size_t>(id) < by_id_.size() ? by_id_[static_cast<std::size_t>(id)] : -1;
+  const auto at = std::lower_bound(sorted_.begin(), sorted_.end(), std::pair<Index, LocalIndex>{id, -1});
+  return at != sorted_.end() && at->first == id ? at->second : -1;
 }
 
 std::vector<IndexRange> bodyRanges(std::span<const std::int32_t> body, LocalIndex count, std::size_t bodies) {

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace kessler {
@@ -127,9 +128,19 @@ void forEachPointOf(const PointStore& points, int body, F&& f) {
     if (points.body[p] == body) f(p);
 }
 
-// The index of each point id among the store's points (all of them, ghosts included): entry `id`
-// holds its index, -1 for an id the store does not hold. Sized by the largest id.
-std::vector<LocalIndex> indexById(const PointStore& points);
+// Where each id of a store's entries (all of them, ghosts included) sits: a table by id while the
+// ids are compact, a sorted list otherwise (a process holding a few points of a large run, or a
+// damaged file). Throws if an id is negative or appears twice.
+class IdIndex {
+ public:
+  explicit IdIndex(std::span<const Index> ids);
+  // The entry holding `id`, -1 if none does.
+  LocalIndex find(Index id) const;
+
+ private:
+  std::vector<LocalIndex> by_id_;
+  std::vector<std::pair<Index, LocalIndex>> sorted_;
+};
 
 // Entries [begin, end) of a store.
 struct IndexRange {

@@ -172,11 +172,11 @@ TEST_F(CheckpointTest, ReadsTheLinksOfAFormat5CheckpointByIndex) {
   const otm::Model& model = method->model();
   const fs::path file = dir_ / "checkpoint.h5";
   writeCheckpoint(file, *method, someLoopState(*method));
-  const std::vector<LocalIndex> index = indexById(model.points);
+  const IdIndex index(model.points.id);
   std::vector<LocalIndex> by_index;
   bool reordered = false;
   for (const auto& [i, j] : model.adjacency) {
-    const LocalIndex a = index[static_cast<std::size_t>(i)], b = index[static_cast<std::size_t>(j)];
+    const LocalIndex a = index.find(i), b = index.find(j);
     by_index.push_back(std::min(a, b));
     by_index.push_back(std::max(a, b));
     reordered = reordered || a != i || b != j;
