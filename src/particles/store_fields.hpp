@@ -1,9 +1,13 @@
 #pragma once
-// Resizing and reordering a store through its one list of arrays (the store's static fields()):
-// shared by the point store and a method's own stores (OTM's nodes, solver/otm/node_store.hpp).
+// Resizing, reordering and packing a store through its one list of arrays (the store's static
+// fields()): shared by the point store and a method's own stores (OTM's nodes,
+// solver/otm/node_store.hpp). Packing is what moving entries between processes sends.
 #include "core/error.hpp"
 #include "core/types.hpp"
 
+#include <cstddef>
+#include <cstring>
+#include <span>
 #include <type_traits>
 #include <vector>
 
@@ -29,6 +33,48 @@ template <class Store>
 void resizeFields(Store& store, std::size_t n) {
   Store::fields(store, [&](const char*, auto& values, const auto& fresh) { values.resize(n, fresh); });
   store.owned = static_cast<LocalIndex>(n);
+}
+
+// Values copied as bytes: trivially copyable ones, and Eigen's fixed vectors and matrices, which
+// are plain runs of doubles.
+static_assert(sizeof(Vec3) == 3 * sizeof(double) && sizeof(Mat3) == 9 * sizeof(double));
+template <class T>
+inline constexpr bool bytewise = std::is_trivially_copyable_v<T> || std::is_same_v<T, Vec3> || std::is_same_v<T, Mat3>;
+
+// Appends entries `which` of every array to `buffer`, array by array in fields() order (raw bytes:
+// the arrays hold trivially copyable values).
+template <class Store>
+void packFields(const Store& store, std::span<const LocalIndex> which, std::vector<std::byte>& buffer) {
+  Store::fields(store, [&](const char* name, const auto& values, const auto&) {
+    using T = typename std::remove_reference_t<decltype(values)>::value_type;
+    static_assert(bytewise<T>, "a store array must hold plain values to be packed");
+    std::size_t at = buffer.size();
+    buffer.resize(at + which.size() * sizeof(T));
+    for (const LocalIndex i : which) {
+      KESSLER_VERIFY(i >= 0 && static_cast<std::size_t>(i) < values.size(), "packing entry {} of '{}', which holds {}",
+                     i, name, values.size());
+      std::memcpy(buffer.data() + at, &values[static_cast<std::size_t>(i)], sizeof(T));
+      at += sizeof(T);
+    }
+  });
+}
+
+// Appends `count` entries packed by packFields, from `buffer` at `offset`, behind the store's
+// entries (`owned` is left as it was: the caller says whether they are its own or ghosts). Returns
+// the offset after them.
+template <class Store>
+std::size_t unpackFields(Store& store, std::span<const std::byte> buffer, std::size_t offset, std::size_t count) {
+  Store::fields(store, [&](const char* name, auto& values, const auto&) {
+    using T = typename std::remove_reference_t<decltype(values)>::value_type;
+    static_assert(bytewise<T>, "a store array must hold plain values to be unpacked");
+    KESSLER_VERIFY(offset + count * sizeof(T) <= buffer.size(), "unpacking {} entries of '{}' past the buffer's end",
+                   count, name);
+    const std::size_t first = values.size();
+    values.resize(first + count);
+    if (count > 0) std::memcpy(static_cast<void*>(&values[first]), buffer.data() + offset, count * sizeof(T));
+    offset += count * sizeof(T);
+  });
+  return offset;
 }
 
 }  // namespace kessler

@@ -2,9 +2,12 @@
 // where each id sits (IdIndex), each body's range (bodyRanges) and its points (forEachPointOf).
 #include "core/error.hpp"
 #include "particles/store.hpp"
+#include "particles/store_fields.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cstddef>
+#include <cstring>
 #include <vector>
 
 namespace kessler {
@@ -59,6 +62,48 @@ TEST(ForEachPointOf, VisitsTheOwnedPointsOfOneBodyInStoreOrder) {
   std::vector<LocalIndex> seen;
   forEachPointOf(points, 0, [&](LocalIndex p) { seen.push_back(p); });
   EXPECT_EQ(seen, (std::vector<LocalIndex>{0, 2}));
+}
+
+// What moving points between processes sends: every array of the chosen entries, through the one
+// field list, arrives bit for bit behind the receiver's entries.
+TEST(PackFields, CarriesEveryArrayOfTheChosenEntries) {
+  PointStore from;
+  from.resize(4);
+  long k = 0;
+  PointStore::fields(from, [&](const char*, auto& values, const auto&) {
+    for (auto& v : values) {
+      std::vector<unsigned char> bytes(sizeof(v));
+      for (auto& b : bytes) b = static_cast<unsigned char>(++k * 37);
+      std::memcpy(static_cast<void*>(&v), bytes.data(), sizeof(v));
+    }
+  });
+  std::vector<std::byte> buffer;
+  const std::vector<LocalIndex> which{3, 1};
+  packFields(from, which, buffer);
+  PointStore to;
+  to.resize(2);
+  EXPECT_EQ(unpackFields(to, buffer, 0, which.size()), buffer.size());
+  EXPECT_EQ(to.size(), 4);
+  EXPECT_EQ(to.owned, 2);  // the caller decides what the new entries are
+  int arrays = 0;
+  // Compare array by array: received entries 2 and 3 are the sender's 3 and 1.
+  std::vector<std::vector<unsigned char>> sent, received;
+  PointStore::fields(from, [&](const char*, const auto& values, const auto&) {
+    const auto* bytes = reinterpret_cast<const unsigned char*>(values.data());
+    const std::size_t size = sizeof(values[0]);
+    std::vector<unsigned char> chosen;
+    for (const LocalIndex i : which) chosen.insert(chosen.end(), bytes + i * size, bytes + (i + 1) * size);
+    sent.push_back(chosen);
+  });
+  PointStore::fields(to, [&](const char*, const auto& values, const auto&) {
+    const auto* bytes = reinterpret_cast<const unsigned char*>(values.data());
+    const std::size_t size = sizeof(values[0]);
+    received.emplace_back(bytes + 2 * size, bytes + 4 * size);
+    ++arrays;
+  });
+  EXPECT_EQ(arrays, PointStore::field_count);
+  EXPECT_EQ(received, sent);
+  EXPECT_THROW(unpackFields(to, std::span<const std::byte>(buffer).first(buffer.size() - 1), 0, 2), Error);
 }
 
 }  // namespace
