@@ -4,7 +4,7 @@
 // interpolation back serve three things:
 //   - the viscosity limiter of every point (PointStore::viscosity_limiter): Christensen's (1990)
 //     monotonic limiter with the nodes of the point's support as its neighbours;
-//   - volume averaging (Settings::volume_averaging): each point's dF is scaled isotropically to the
+//   - volume averaging (OtmOptions::volume_averaging): each point's dF is scaled isotropically to the
 //     patch average, which removes the point-wise volume noise of a 3-D shock on irregular points;
 //   - the record of what averaging took away (PointStore::volume_defect), which the stabilisation
 //     pressure pushes back on in the forces, so that the averaging has no zero-energy mode.
