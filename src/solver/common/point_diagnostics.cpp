@@ -50,10 +50,10 @@ std::string describePoint(const ParticleState& state, const StepInfo& at, LocalI
 }
 
 void PointDiagnostics::check(const ParticleState& state, const StepInfo& at, double reference_energy,
-                             const StepLengthRule& rule, bool driven) {
+                             const StepLengthRule& rule, const std::function<bool()>& driven) {
   checkPoints(state, at);
   checkTimeStep(state, at, rule);
-  if (!driven) checkEnergy(state, at, reference_energy);
+  checkEnergy(state, at, reference_energy, driven);
 }
 
 // One pass for the finiteness checks and the total energy: the lowest failing index and fixed
@@ -99,9 +99,10 @@ void PointDiagnostics::checkTimeStep(const ParticleState& state, const StepInfo&
                   s.sound_speed[limiting], s.volume[limiting] / s.volume0[limiting])));
 }
 
-void PointDiagnostics::checkEnergy(const ParticleState& state, const StepInfo& at, double reference_energy) const {
+void PointDiagnostics::checkEnergy(const ParticleState& state, const StepInfo& at, double reference_energy,
+                                   const std::function<bool()>& driven) const {
   if (!(reference_energy > 0.0) || energy_ <= (1.0 + settings_.max_energy_growth) * reference_energy ||
-      state.points.owned == 0)
+      state.points.owned == 0 || driven())
     return;
   // Name the point with the largest specific energy, where a spurious source usually shows.
   const PointStore& s = state.points;

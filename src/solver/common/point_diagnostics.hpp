@@ -44,10 +44,10 @@ class PointDiagnostics {
   explicit PointDiagnostics(const SolverSettings& settings) : settings_(settings) {}
 
   // `reference_energy`: the total energy the run started with, J. The energy check is skipped when
-  // it is not positive, or when `driven` (a prescribed non-zero velocity does work that this check
-  // does not account).
+  // it is not positive, or when driven() says a prescribed non-zero velocity does work that this
+  // check does not account (asked only when the energy has grown beyond its limit).
   void check(const ParticleState& state, const StepInfo& at, double reference_energy, const StepLengthRule& rule,
-             bool driven);
+             const std::function<bool()>& driven);
 
   // Total energy of the last check(), J.
   double lastEnergy() const { return energy_; }
@@ -55,7 +55,8 @@ class PointDiagnostics {
  private:
   void checkPoints(const ParticleState& state, const StepInfo& at);
   void checkTimeStep(const ParticleState& state, const StepInfo& at, const StepLengthRule& rule) const;
-  void checkEnergy(const ParticleState& state, const StepInfo& at, double reference_energy) const;
+  void checkEnergy(const ParticleState& state, const StepInfo& at, double reference_energy,
+                   const std::function<bool()>& driven) const;
 
   SolverSettings settings_;
   std::vector<double> block_energy_;  // per fixed block of points, summed in order

@@ -28,9 +28,11 @@ void Diagnostics::check(const Model& model, const StepInfo& at, double reference
                                  : fmt::format("non-finite position {}", describeVector(nodes.x[bad]));
     throw NumericalError(describeNode(model, at, bad, what));
   }
-  bool driven = false;  // a piston does work
-  for (LocalIndex a = 0; a < nodes.owned && !driven; ++a)
-    driven = nodes.constrained[a] != 0 && nodes.prescribed_v[a].squaredNorm() > 0.0;
+  auto driven = [&] {  // a piston does work
+    for (LocalIndex a = 0; a < nodes.owned; ++a)
+      if (nodes.constrained[a] != 0 && nodes.prescribed_v[a].squaredNorm() > 0.0) return true;
+    return false;
+  };
   const StepLengthRule rule{
       [&](LocalIndex p) { return stepLength(model, p); },
       [&](LocalIndex p) {

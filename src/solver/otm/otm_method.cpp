@@ -21,18 +21,13 @@ OtmMethod::OtmMethod(Model model, const Problem& problem)
 
 void OtmMethod::locateHistories() {
   if (histories_.empty()) return;
-  std::vector<LocalIndex> index;
-  for (LocalIndex a = 0; a < model_.nodes.size(); ++a) {
-    const auto id = static_cast<std::size_t>(model_.nodes.id[a]);
-    if (index.size() <= id) index.resize(id + 1, -1);
-    index[id] = a;
-  }
+  const IdIndex index(model_.nodes.id);
   for (History& h : histories_) {
     h.nodes.clear();
     for (const Index id : h.node_ids) {
-      KESSLER_VERIFY(static_cast<std::size_t>(id) < index.size() && index[static_cast<std::size_t>(id)] >= 0,
-                     "prescribed velocity history: node {} is not in the store", id);
-      h.nodes.push_back(index[static_cast<std::size_t>(id)]);
+      const LocalIndex a = index.find(id);
+      KESSLER_VERIFY(a >= 0, "prescribed velocity history: node {} is not in the store", id);
+      h.nodes.push_back(a);
     }
   }
 }

@@ -8,18 +8,24 @@
 namespace kessler::otm {
 namespace {
 
-// The transpose lists, for every node, exactly the entries that reference it, in increasing
-// point order (the order the deterministic nodal gathers rely on).
-TEST(Connectivity, TransposeListsEveryEntryInPointOrder) {
-  std::mt19937 rng(5);
-  std::uniform_int_distribution<int> count(1, 9), node(0, 49);
+// `points` rows of between `fewest` and `most` entries, each a random one of `nodes` nodes.
+Connectivity randomRows(unsigned seed, int points, int fewest, int most, int nodes) {
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> count(fewest, most), node(0, nodes - 1);
   Connectivity c;
   c.offset.push_back(0);
-  for (int p = 0; p < 200; ++p) {
+  for (int p = 0; p < points; ++p) {
     const int n = count(rng);
     for (int k = 0; k < n; ++k) c.node.push_back(node(rng));
     c.offset.push_back(static_cast<Index>(c.node.size()));
   }
+  return c;
+}
+
+// The transpose lists, for every node, exactly the entries that reference it, in increasing
+// point order (the order the deterministic nodal gathers rely on).
+TEST(Connectivity, TransposeListsEveryEntryInPointOrder) {
+  Connectivity c = randomRows(5, 200, 1, 9, 50);
   c.buildTranspose(50);
   ASSERT_EQ(c.node_offset.back(), static_cast<Index>(c.node.size()));
   std::vector<int> seen(c.node.size(), 0);
@@ -40,15 +46,7 @@ TEST(Connectivity, TransposeListsEveryEntryInPointOrder) {
 
 // The transpose is built in parallel: any thread count gives the same arrays.
 TEST(Connectivity, TransposeDoesNotDependOnTheThreadCount) {
-  std::mt19937 rng(7);
-  std::uniform_int_distribution<int> count(0, 12), node(0, 99);
-  Connectivity c;
-  c.offset.push_back(0);
-  for (int p = 0; p < 1000; ++p) {
-    const int n = count(rng);
-    for (int k = 0; k < n; ++k) c.node.push_back(node(rng));
-    c.offset.push_back(static_cast<Index>(c.node.size()));
-  }
+  Connectivity c = randomRows(7, 1000, 0, 12, 100);
   const int threads = omp_get_max_threads();
   omp_set_num_threads(1);
   c.buildTranspose(100);
