@@ -1,13 +1,27 @@
 // The `kessler` command line: run, check, verify.
 #include "app/commands.hpp"
 #include "core/error.hpp"
+#include "parallel/communicator.hpp"
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include <exception>
 
 int main(int argc, char** argv) {
+  // MPI starts only under mpirun (parallel/communicator.hpp); a plain run never touches it.
+  kessler::parallel::Session session(argc, argv);
+  const kessler::parallel::Communicator& world = kessler::parallel::Communicator::world();
+  if (world.size() > 1) {
+    // The processes are up (docs/parallel.md), but no command steps a problem across them yet:
+    // refuse rather than run the same problem once per rank.
+    if (world.root())
+      fmt::print(stderr,
+                 "kessler: error: started on {} ranks, but this version runs a problem on one process only "
+                 "(distributed stepping is not built yet: docs/parallel.md); run it without mpirun\n",
+                 world.size());
+    return 1;
+  }
   CLI::App app{"Kessler: hypervelocity impact simulation with the Optimal Transportation Meshfree method"};
   app.require_subcommand(1);
   kessler::app::addCommands(app);

@@ -5,7 +5,6 @@
 // |y| > H/2) when the crack first grows (a point eroded beyond the initial tips). Reference:
 //   sigma_c = sqrt(E G_c / (pi a)) / sqrt(sec(pi a / (2W)))
 // (Griffith 1921; finite-width correction of Feddersen 1966). Tolerance 10%.
-#include "core/reduce.hpp"
 #include "solver/methods.hpp"
 #include "verify/fixtures.hpp"
 #include "verify/impact_problems.hpp"

@@ -4,7 +4,7 @@
 // round-off. Measured: the largest change of total momentum over the run divided by the
 // momentum scale sum_p m_p |v_p(0)|; tolerance 1e-10. The run must also show a real
 // exchange of momentum between the bodies, or the problem fails.
-#include "core/reduce.hpp"
+#include "core/exact_sum.hpp"
 #include "solver/methods.hpp"
 #include "verify/fixtures.hpp"
 #include "verify/problems.hpp"
@@ -26,7 +26,7 @@ Outcome momentum() {
   const ParticleState& model = method->state();
 
   auto bodyMomentum = [&](int body) {
-    return deterministicSum(model.points.owned, Vec3(Vec3::Zero()), [&](LocalIndex p) -> Vec3 {
+    return exactSums<3>(model.points.owned, [&](LocalIndex p) -> Vec3 {
       return model.points.body[p] == body ? Vec3(model.points.mass[p] * model.points.v[p]) : Vec3(Vec3::Zero());
     });
   };

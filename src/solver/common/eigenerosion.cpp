@@ -1,6 +1,6 @@
 #include "solver/common/eigenerosion.hpp"
 
-#include "core/reduce.hpp"
+#include "core/exact_sum.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -41,7 +41,7 @@ LocalIndex Eigenerosion::apply(ParticleState& model) {
   const auto count = static_cast<LocalIndex>(candidate_.size());
   if (count == 0) return 0;
   candidate_eps_.resize(static_cast<std::size_t>(count));
-  const double eps_sum = deterministicSum(count, 0.0, [&](LocalIndex k) {
+  const double eps_sum = exactSum(count, [&](LocalIndex k) {
     candidate_eps_[k] = erosion_radius_ * points.spacing(candidate_[k]);
     return candidate_eps_[k];
   });

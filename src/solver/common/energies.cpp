@@ -1,17 +1,22 @@
 #include "solver/common/energies.hpp"
 
-#include "core/reduce.hpp"
+#include "core/exact_sum.hpp"
 
 namespace kessler {
 
 Energies pointEnergies(const PointStore& points, double stored) {
   Energies e;
-  e.kinetic = deterministicSum(points.owned, 0.0,
-                               [&](LocalIndex p) { return 0.5 * points.mass[p] * points.v[p].squaredNorm(); });
-  e.internal = deterministicSum(points.owned, 0.0, [&](LocalIndex p) { return points.mass[p] * points.energy[p]; });
+  using Terms = Eigen::Matrix<double, 5, 1>;
+  const Terms sum = exactSums<5>(points.owned, [&](LocalIndex p) {
+    const Vec3 momentum = points.mass[p] * points.v[p];
+    Terms t;
+    t << 0.5 * momentum.dot(points.v[p]), points.mass[p] * points.energy[p], momentum;
+    return t;
+  });
+  e.kinetic = sum[0];
+  e.internal = sum[1];
   e.stabilisation = stored;
-  e.momentum = deterministicSum(points.owned, Vec3(Vec3::Zero()),
-                                [&](LocalIndex p) -> Vec3 { return points.mass[p] * points.v[p]; });
+  e.momentum = sum.tail<3>();
   return e;
 }
 

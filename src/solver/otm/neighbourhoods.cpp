@@ -2,7 +2,7 @@
 
 #include "approx/lme.hpp"
 #include "core/error.hpp"
-#include "core/reduce.hpp"
+#include "core/exact_sum.hpp"
 #include "core/timer.hpp"
 #include "solver/common/debris_contact.hpp"
 
@@ -275,7 +275,7 @@ void Neighbourhoods::update(Model& model) {
   spacing_.resize(static_cast<std::size_t>(np));
 #pragma omp parallel for schedule(static)
   for (LocalIndex p = 0; p < np; ++p) spacing_[p] = points.spacing(p);
-  const Eigen::Vector2d sum = deterministicSum(np, Eigen::Vector2d(Eigen::Vector2d::Zero()), [&](LocalIndex p) {
+  const Eigen::Vector2d sum = exactSums<2>(np, [&](LocalIndex p) {
     return points.broken[p] ? Eigen::Vector2d(0.0, 0.0) : Eigen::Vector2d(spacing_[p], 1.0);
   });
   const double spacing_sum = sum[0];

@@ -1,6 +1,6 @@
 #include "solver/otm/volume_patch.hpp"
 
-#include "core/reduce.hpp"
+#include "core/exact_sum.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -118,12 +118,12 @@ double VolumePatch::apply(const Connectivity& conn, LocalIndex owned_nodes, bool
     points.dF[p] *= std::exp((average - own) / 3.0);
     j[p] = points.dF[p].determinant();
   }
-  return deterministicSum(points.owned, 0.0, [&](LocalIndex p) { return work_[p]; });
+  return exactSum(points.owned, [&](LocalIndex p) { return work_[p]; });
 }
 
 double VolumePatch::closeStep(const PointStore& points, double alpha) {
   if (!(alpha > 0.0) || defect_step_.size() != static_cast<std::size_t>(points.owned)) return 0.0;
-  return deterministicSum(points.owned, 0.0, [&](LocalIndex p) {
+  return exactSum(points.owned, [&](LocalIndex p) {
     if (points.debris(p)) return 0.0;
     const double S = pressure(points, p, alpha);
     double second = -0.5 * S * points.volume[p] * defect_step_[p];

@@ -1,0 +1,199 @@
+// The parallel layer on several ranks (run by mpirun with 2 and 3 ranks; tests/mpi/CMakeLists.txt):
+// collectives, exact sums that do not depend on how the terms are split among ranks, Zoltan's
+// subdomains, and the migration of points into them and back.
+#include "parallel/communicator.hpp"
+#include "parallel/migrate.hpp"
+#include "parallel/partition.hpp"
+#include "particles/store.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <numeric>
+#include <random>
+#include <vector>
+
+namespace kessler::parallel {
+namespace {
+
+const Communicator& world() {
+  return Communicator::world();
+}
+
+TEST(Ranks, StartedByMpirunOnSeveralRanks) {
+  EXPECT_TRUE(launched());
+  EXPECT_GE(world().size(), 2);
+  EXPECT_EQ(world().sum(std::int64_t{world().rank()}), world().size() * (world().size() - 1) / 2);
+  EXPECT_EQ(world().min(10.0 + world().rank()), 10.0);
+  EXPECT_EQ(world().max(10.0 + world().rank()), 10.0 + world().size() - 1);
+  EXPECT_TRUE(world().any(world().rank() == world().size() - 1));
+  EXPECT_FALSE(world().any(false));
+}
+
+// Rank r sends rank s r + s + 1 bytes, each r * 16 + s.
+TEST(Ranks, ExchangeDeliversEachPairsBytes) {
+  const int n = world().size(), me = world().rank();
+  std::vector<std::vector<std::byte>> out(static_cast<std::size_t>(n));
+  for (int s = 0; s < n; ++s) out[s].assign(static_cast<std::size_t>(me + s + 1), std::byte(me * 16 + s));
+  const auto in = world().exchange(out);
+  ASSERT_EQ(in.size(), static_cast<std::size_t>(n));
+  for (int r = 0; r < n; ++r)
+    EXPECT_EQ(in[r], std::vector<std::byte>(static_cast<std::size_t>(r + me + 1), std::byte(r * 16 + me)));
+  const std::vector<std::byte> mine(static_cast<std::size_t>(me), std::byte(me));
+  const auto all = world().allGather(mine);
+  for (int r = 0; r < n; ++r) EXPECT_EQ(all[r], std::vector<std::byte>(static_cast<std::size_t>(r), std::byte(r)));
+}
+
+// The same 30,000 terms over 600 orders of magnitude, split among the ranks two ways (dealt round,
+// and in blocks): the global sum has the bits of one process's sum of them all.
+TEST(Ranks, ExactSumIndependentOfTheSplit) {
+  std::mt19937_64 random(3);
+  std::uniform_real_distribution<double> mantissa(-1.0, 1.0);
+  std::uniform_int_distribution<int> exponent(-300, 300);
+  std::vector<double> terms(30000);
+  for (double& t : terms) t = std::ldexp(mantissa(random), exponent(random));
+  ExactSum all;
+  for (double t : terms) all.add(t);
+  const double reference = all.value();
+  const std::size_t n = static_cast<std::size_t>(world().size()), me = static_cast<std::size_t>(world().rank());
+  ExactSum dealt, block;
+  for (std::size_t i = 0; i < terms.size(); ++i) {
+    if (i % n == me) dealt.add(terms[i]);
+    if (i * n / terms.size() == me) block.add(terms[i]);
+  }
+  EXPECT_EQ(world().sum(dealt), reference);
+  EXPECT_EQ(world().sum(block), reference);
+}
+
+// A lattice of points, all on rank 0 at first, with more work in one corner (as an impact zone).
+PointStore lattice() {
+  PointStore points;
+  if (!world().root()) return points;
+  const int nx = 24, ny = 14, nz = 9;
+  resizeFields(points, static_cast<std::size_t>(nx * ny * nz));
+  LocalIndex p = 0;
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i, ++p) {
+        points.id[p] = 1000 + 7 * p;  // sparse, as after erosion
+        points.x[p] = Vec3(0.1 * i, 0.1 * j, 0.1 * k) + Vec3(1e-3 * std::sin(p), 1e-3 * std::cos(p), 0.0);
+        points.v[p] = Vec3(p, -p, 0.5 * p);
+        points.mass[p] = 1.0 + 1e-3 * p;
+        points.body[p] = i < nx / 2 ? 0 : 1;
+        points.F[p] = Mat3::Identity() * (1.0 + 1e-4 * p);
+      }
+  return points;
+}
+
+double workOf(const Vec3& x) {
+  return x[0] < 0.6 && x[1] < 0.6 ? 4.0 : 1.0;
+}
+
+std::vector<double> work(const PointStore& points) {
+  std::vector<double> w(static_cast<std::size_t>(points.owned));
+  for (LocalIndex p = 0; p < points.owned; ++p) w[p] = workOf(points.x[p]);
+  return w;
+}
+
+// Each point on exactly one rank, the rank whose subdomain holds it; the work shared evenly.
+void expectDistributed(const Partition& partition, const PointStore& points, Index total) {
+  const int me = world().rank();
+  double mine = 0.0;
+  for (LocalIndex p = 0; p < points.owned; ++p) {
+    EXPECT_EQ(partition.owner(points.x[p]), me) << "point " << points.id[p] << " at " << points.x[p].transpose();
+    EXPECT_TRUE(partition.subdomain(me).contains(points.x[p]));
+    const std::vector<int> meeting = partition.ranksMeeting(points.x[p], points.x[p]);
+    EXPECT_NE(std::find(meeting.begin(), meeting.end(), me), meeting.end());
+    mine += workOf(points.x[p]);
+  }
+  EXPECT_EQ(world().sum(std::int64_t{points.owned}), total);
+  std::vector<std::byte> ids(points.id.size() * sizeof(Index));
+  if (!ids.empty()) std::memcpy(ids.data(), points.id.data(), ids.size());
+  std::vector<Index> all;
+  for (const auto& bytes : world().allGather(ids)) {
+    const std::size_t at = all.size();
+    all.resize(at + bytes.size() / sizeof(Index));
+    if (!bytes.empty()) std::memcpy(&all[at], bytes.data(), bytes.size());
+  }
+  std::sort(all.begin(), all.end());
+  EXPECT_EQ(std::adjacent_find(all.begin(), all.end()), all.end()) << "a point on two ranks";
+  EXPECT_EQ(static_cast<Index>(all.size()), total);
+  // RCB cuts the work to within a point's share or so.
+  EXPECT_LT(imbalance(world(), mine), 1.05);
+}
+
+TEST(Ranks, PointsMigrateIntoTheirSubdomainsAndBackBitwise) {
+  const PointStore original = lattice();
+  const Index total = world().sum(std::int64_t{original.owned});
+  PointStore points = original;
+  Partition partition(world());
+  std::vector<int> owner = partition.balance(points.x, points.id, work(points));
+  migrate(points, owner, world());
+  expectDistributed(partition, points, total);
+  EXPECT_GT(points.owned, 0);
+
+  // Neighbouring subdomains meet: a box around the cut between them names both.
+  const Box mine = partition.subdomain(world().rank());
+  const Vec3 centre = 0.5 * (mine.lo + mine.hi);
+  const std::vector<int> all_ranks =
+      partition.ranksMeeting(centre - Vec3::Constant(10.0), centre + Vec3::Constant(10.0));
+  EXPECT_EQ(static_cast<int>(all_ranks.size()), world().size());
+
+  // The points move (as in a run) and are balanced again.
+  for (LocalIndex p = 0; p < points.owned; ++p) points.x[p] += Vec3(0.3 * points.x[p][1], 0.0, -0.2);
+  owner = partition.balance(points.x, points.id, work(points));
+  migrate(points, owner, world());
+  expectDistributed(partition, points, total);
+
+  // Everything back to rank 0, undone and in id order: bitwise the original.
+  migrate(points, std::vector<int>(static_cast<std::size_t>(points.owned), 0), world());
+  if (!world().root()) {
+    EXPECT_EQ(points.owned, 0);
+    return;
+  }
+  ASSERT_EQ(points.owned, original.owned);
+  std::vector<LocalIndex> order(static_cast<std::size_t>(points.owned));
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](LocalIndex a, LocalIndex b) { return points.id[a] < points.id[b]; });
+  permuteFields(points, order);
+  for (LocalIndex p = 0; p < points.owned; ++p) points.x[p] -= Vec3(0.3 * original.x[p][1], 0.0, -0.2);
+  EXPECT_EQ(points.id, original.id);
+  EXPECT_EQ(points.v, original.v);
+  EXPECT_EQ(points.mass, original.mass);
+  EXPECT_EQ(points.body, original.body);
+  EXPECT_EQ(points.F, original.F);
+  for (LocalIndex p = 0; p < points.owned; ++p) EXPECT_NEAR((points.x[p] - original.x[p]).norm(), 0.0, 1e-15);
+}
+
+}  // namespace
+}  // namespace kessler::parallel
+
+// The other ranks report only their failures, each line naming its rank.
+class FailurePrinter : public ::testing::EmptyTestEventListener {
+ public:
+  explicit FailurePrinter(int rank) : rank_(rank) {}
+  void OnTestPartResult(const ::testing::TestPartResult& result) override {
+    if (result.failed())
+      std::fprintf(stderr, "[rank %d] %s:%d: %s\n", rank_, result.file_name() ? result.file_name() : "?",
+                   result.line_number(), result.message());
+  }
+
+ private:
+  int rank_;
+};
+
+int main(int argc, char** argv) {
+  kessler::parallel::Session session(argc, argv);
+  ::testing::InitGoogleTest(&argc, argv);
+  // One full report, from rank 0; a failure on any rank fails the run through its exit code.
+  const kessler::parallel::Communicator& world = kessler::parallel::Communicator::world();
+  if (!world.root()) {
+    auto& listeners = ::testing::UnitTest::GetInstance()->listeners();
+    delete listeners.Release(listeners.default_result_printer());
+    listeners.Append(new FailurePrinter(world.rank()));
+  }
+  const int failed = RUN_ALL_TESTS();
+  return world.any(failed != 0) ? 1 : 0;
+}
