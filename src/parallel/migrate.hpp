@@ -12,6 +12,35 @@
 
 namespace kessler::parallel {
 
+// Buffers for an exchange: for each rank r, the count of entries lists[r] and their packed arrays.
+template <class Store>
+std::vector<std::vector<std::byte>> packEntries(const Store& store, const std::vector<std::vector<LocalIndex>>& lists) {
+  std::vector<std::vector<std::byte>> buffers(lists.size());
+  for (std::size_t r = 0; r < lists.size(); ++r) {
+    const auto count = static_cast<std::uint64_t>(lists[r].size());
+    buffers[r].resize(sizeof count);
+    std::memcpy(buffers[r].data(), &count, sizeof count);
+    packFields(store, std::span<const LocalIndex>(lists[r]), buffers[r]);
+  }
+  return buffers;
+}
+
+// Appends the entries packEntries put in each received buffer, rank by rank, behind the store's;
+// returns how many came from each rank (`owned` is left to the caller).
+template <class Store>
+std::vector<std::size_t> unpackEntries(Store& store, const std::vector<std::vector<std::byte>>& buffers) {
+  std::vector<std::size_t> counts(buffers.size());
+  for (std::size_t r = 0; r < buffers.size(); ++r) {
+    std::uint64_t count = 0;
+    KESSLER_VERIFY(buffers[r].size() >= sizeof count, "a message of {} bytes from rank {}", buffers[r].size(), r);
+    std::memcpy(&count, buffers[r].data(), sizeof count);
+    counts[r] = static_cast<std::size_t>(count);
+    const std::size_t end = unpackFields(store, buffers[r], sizeof count, counts[r]);
+    KESSLER_VERIFY(end == buffers[r].size(), "a message of {} bytes from rank {} held {}", buffers[r].size(), r, end);
+  }
+  return counts;
+}
+
 template <class Store>
 void migrate(Store& store, std::span<const int> destination, const Communicator& comm) {
   KESSLER_VERIFY(destination.size() == static_cast<std::size_t>(store.owned) &&
@@ -25,22 +54,9 @@ void migrate(Store& store, std::span<const int> destination, const Communicator&
                    "entry {} sent to rank {} of {}", i, destination[i], ranks);
     leaving[static_cast<std::size_t>(destination[i])].push_back(static_cast<LocalIndex>(i));
   }
-  std::vector<std::vector<std::byte>> outgoing(ranks);
-  for (std::size_t r = 0; r < ranks; ++r) {
-    const auto count = static_cast<std::uint64_t>(leaving[r].size());
-    outgoing[r].resize(sizeof count);
-    std::memcpy(outgoing[r].data(), &count, sizeof count);
-    packFields(store, std::span<const LocalIndex>(leaving[r]), outgoing[r]);
-  }
-  const std::vector<std::vector<std::byte>> incoming = comm.exchange(outgoing);
+  const std::vector<std::vector<std::byte>> incoming = comm.exchange(packEntries(store, leaving));
   resizeFields(store, 0);
-  for (const std::vector<std::byte>& buffer : incoming) {
-    std::uint64_t count = 0;
-    KESSLER_VERIFY(buffer.size() >= sizeof count, "a migration message of {} bytes", buffer.size());
-    std::memcpy(&count, buffer.data(), sizeof count);
-    const std::size_t end = unpackFields(store, buffer, sizeof count, static_cast<std::size_t>(count));
-    KESSLER_VERIFY(end == buffer.size(), "a migration message of {} bytes held {}", buffer.size(), end);
-  }
+  unpackEntries(store, incoming);
   store.owned = static_cast<LocalIndex>(store.x.size());
 }
 

@@ -2,6 +2,7 @@
 // collectives, exact sums that do not depend on how the terms are split among ranks, Zoltan's
 // subdomains, and the migration of points into them and back.
 #include "parallel/communicator.hpp"
+#include "parallel/halo.hpp"
 #include "parallel/migrate.hpp"
 #include "parallel/partition.hpp"
 #include "particles/store.hpp"
@@ -97,6 +98,19 @@ std::vector<double> work(const PointStore& points) {
   return w;
 }
 
+// Every rank's values, in rank order, on every rank.
+template <class T>
+std::vector<std::vector<T>> gather(const std::vector<T>& mine) {
+  std::vector<std::byte> bytes(mine.size() * sizeof(T));
+  if (!bytes.empty()) std::memcpy(bytes.data(), mine.data(), bytes.size());
+  std::vector<std::vector<T>> all;
+  for (const auto& theirs : world().allGather(bytes)) {
+    all.emplace_back(theirs.size() / sizeof(T));
+    if (!theirs.empty()) std::memcpy(static_cast<void*>(all.back().data()), theirs.data(), theirs.size());
+  }
+  return all;
+}
+
 // Each point on exactly one rank, the rank whose subdomain holds it; the work shared evenly.
 void expectDistributed(const Partition& partition, const PointStore& points, Index total) {
   const int me = world().rank();
@@ -109,14 +123,8 @@ void expectDistributed(const Partition& partition, const PointStore& points, Ind
     mine += workOf(points.x[p]);
   }
   EXPECT_EQ(world().sum(std::int64_t{points.owned}), total);
-  std::vector<std::byte> ids(points.id.size() * sizeof(Index));
-  if (!ids.empty()) std::memcpy(ids.data(), points.id.data(), ids.size());
   std::vector<Index> all;
-  for (const auto& bytes : world().allGather(ids)) {
-    const std::size_t at = all.size();
-    all.resize(at + bytes.size() / sizeof(Index));
-    if (!bytes.empty()) std::memcpy(&all[at], bytes.data(), bytes.size());
-  }
+  for (const auto& ids : gather(points.id)) all.insert(all.end(), ids.begin(), ids.end());
   std::sort(all.begin(), all.end());
   EXPECT_EQ(std::adjacent_find(all.begin(), all.end()), all.end()) << "a point on two ranks";
   EXPECT_EQ(static_cast<Index>(all.size()), total);
@@ -165,6 +173,49 @@ TEST(Ranks, PointsMigrateIntoTheirSubdomainsAndBackBitwise) {
   EXPECT_EQ(points.body, original.body);
   EXPECT_EQ(points.F, original.F);
   for (LocalIndex p = 0; p < points.owned; ++p) EXPECT_NEAR((points.x[p] - original.x[p]).norm(), 0.0, 1e-15);
+}
+
+// Ghosts: on each rank exactly the other ranks' points whose box x +- reach meets its subdomain
+// (found here by brute force over every point), in the order of the rank they come from; a refresh
+// brings their owners' values.
+TEST(Ranks, HaloHoldsExactlyTheEntriesThatReachTheSubdomain) {
+  PointStore points = lattice();
+  Partition partition(world());
+  migrate(points, partition.balance(points.x, points.id, work(points)), world());
+  std::vector<double> reach(static_cast<std::size_t>(points.owned));
+  for (LocalIndex p = 0; p < points.owned; ++p) reach[p] = points.id[p] % 3 == 0 ? 0.1851 : 0.1234;
+  Halo halo;
+  halo.build(points, partition, reach, world());
+
+  const Box mine = partition.subdomain(world().rank());
+  const auto ids = gather(std::vector<Index>(points.id.begin(), points.id.begin() + points.owned));
+  const auto positions = gather(std::vector<Vec3>(points.x.begin(), points.x.begin() + points.owned));
+  const auto reaches = gather(reach);
+  std::vector<Index> expected;
+  for (int r = 0; r < world().size(); ++r) {
+    if (r == world().rank()) continue;
+    for (std::size_t i = 0; i < positions[r].size(); ++i) {
+      const Vec3 lo = positions[r][i] - Vec3::Constant(reaches[r][i]),
+                 hi = positions[r][i] + Vec3::Constant(reaches[r][i]);
+      if ((lo.array() <= mine.hi.array()).all() && (hi.array() >= mine.lo.array()).all()) expected.push_back(ids[r][i]);
+    }
+  }
+  ASSERT_EQ(halo.ghosts(), static_cast<LocalIndex>(expected.size()));
+  EXPECT_GT(halo.ghosts(), 0);
+  EXPECT_EQ(std::vector<Index>(points.id.begin() + points.owned, points.id.end()), expected);
+  EXPECT_EQ(world().sum(static_cast<std::int64_t>(halo.sent())), world().sum(std::int64_t{halo.ghosts()}));
+  EXPECT_GE(halo.neighbours(), 1);
+
+  std::vector<double> value(points.x.size(), -1.0);
+  for (LocalIndex p = 0; p < points.owned; ++p) value[p] = 0.5 + 2.0 * static_cast<double>(points.id[p]);
+  halo.refresh(value);
+  for (std::size_t g = static_cast<std::size_t>(points.owned); g < value.size(); ++g)
+    EXPECT_EQ(value[g], 0.5 + 2.0 * static_cast<double>(points.id[g]));
+
+  // Built again (as after the points moved): the old ghosts go first.
+  halo.build(points, partition, reach, world());
+  EXPECT_EQ(halo.ghosts(), static_cast<LocalIndex>(expected.size()));
+  EXPECT_EQ(points.x.size(), static_cast<std::size_t>(points.owned + halo.ghosts()));
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // collective is the identity and every point stays. The same code on 2 and 3 ranks is tested by
 // tests/mpi under mpirun.
 #include "parallel/communicator.hpp"
+#include "parallel/halo.hpp"
 #include "parallel/migrate.hpp"
 #include "parallel/partition.hpp"
 #include "particles/store.hpp"
@@ -68,6 +69,25 @@ TEST(Migrate, OneProcessKeepsEveryEntryInOrder) {
   EXPECT_EQ(points.mass, before.mass);
   EXPECT_THROW(migrate(points, std::vector<int>{0, 0, 1, 0}, Communicator::world()), Error);
   EXPECT_THROW(migrate(points, std::vector<int>{0}, Communicator::world()), Error);
+}
+
+TEST(Halo, OneProcessHasNoGhosts) {
+  PointStore points;
+  resizeFields(points, 3);
+  for (LocalIndex p = 0; p < 3; ++p) points.x[p] = Vec3(p, 0, 0);
+  Partition partition(Communicator::world());
+  partition.balance(points.x, points.id, std::vector<double>(3, 1.0));
+  Halo halo;
+  std::vector<double> values{1, 2, 3};
+  EXPECT_THROW(halo.refresh(values), Error);
+  halo.build(points, partition, std::vector<double>(3, 10.0), Communicator::world());
+  EXPECT_EQ(halo.ghosts(), 0);
+  EXPECT_EQ(halo.sent(), 0u);
+  EXPECT_EQ(points.x.size(), 3u);
+  halo.refresh(values);
+  EXPECT_EQ(values, (std::vector<double>{1, 2, 3}));
+  std::vector<double> too_many(4, 0.0);
+  EXPECT_THROW(halo.refresh(too_many), Error);
 }
 
 }  // namespace
