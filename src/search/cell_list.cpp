@@ -39,8 +39,14 @@ void CellList::build(std::span<const Vec3> x, LocalIndex count, double cell_size
   };
   cell_ = cell_size;
   while (cellCount(cell_) > max_cells) cell_ *= 1.26;
-  origin_ = lo;
-  for (int d = 0; d < 3; ++d) dims_[d] = static_cast<int>(std::floor(extent[d] / cell_)) + 1;
+  // The cells lie on a lattice through the origin of space, not through this set's corner: the cell
+  // a position falls in, and so the order in which a query visits positions, is then the same in
+  // any set that holds it, given the cell size (a distributed run's ranks hold overlapping sets and
+  // their sums must agree bitwise; docs/parallel.md).
+  for (int d = 0; d < 3; ++d) {
+    base_[d] = std::floor(lo[d] / cell_);
+    dims_[d] = static_cast<int>(std::floor(hi[d] / cell_) - base_[d]) + 1;
+  }
   const long cells = static_cast<long>(dims_[0]) * dims_[1] * dims_[2];
 
   // Counting sort of positions into cells: stable, so each cell lists indices in order.

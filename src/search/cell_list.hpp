@@ -1,9 +1,12 @@
 #pragma once
 // Uniform-grid cell list over a set of positions, for fixed-radius neighbour queries.
-// Queries visit candidates in a fixed order (cell by cell, then by index), so results do
-// not depend on the number of threads.
+// Queries visit candidates cell by cell, then by index. The cells lie on a lattice through the
+// origin of space, so for a given cell size that order is the same for any number of threads and
+// in any set of positions that holds the candidates in the same relative index order (the
+// overlapping sets of a distributed run's ranks; docs/parallel.md).
 #include "core/types.hpp"
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cstdint>
@@ -25,7 +28,6 @@ class CellList {
   // Calls f(index, squared distance) for every binned position within `radius` of q.
   template <typename F>
   void forEachWithin(const Vec3& q, double radius, F&& f) const;
-
   // Calls f(cell) for every cell that may hold a position within `radius` of q; the binned
   // positions of a cell are indexAt(s) for s in [cellBegin(cell), cellEnd(cell)).
   template <typename F>
@@ -47,7 +49,7 @@ class CellList {
   bool cellRange(const Vec3& q, double radius, std::array<int, 3>& lo, std::array<int, 3>& hi) const;
   long flat(int i, int j, int k) const { return (static_cast<long>(k) * dims_[1] + j) * dims_[0] + i; }
 
-  Vec3 origin_ = Vec3::Zero();
+  Vec3 base_ = Vec3::Zero();  // the lattice coordinates (integers) of the grid's first cell
   double cell_ = 1.0;
   std::array<int, 3> dims_{1, 1, 1};
   std::vector<LocalIndex> start_;   // size cells+1
@@ -61,7 +63,9 @@ class CellList {
 
 inline std::array<int, 3> CellList::cellOf(const Vec3& x) const {
   std::array<int, 3> c{};
-  for (int d = 0; d < 3; ++d) c[d] = static_cast<int>(std::floor((x[d] - origin_[d]) / cell_));
+  // Clamped to one cell beyond the grid before the conversion: a far query stays in int's range.
+  for (int d = 0; d < 3; ++d)
+    c[d] = static_cast<int>(std::clamp(std::floor(x[d] / cell_) - base_[d], -1.0, static_cast<double>(dims_[d])));
   return c;
 }
 

@@ -5,7 +5,6 @@
 #include "solver/common/release.hpp"
 #include "solver/common/stable_step.hpp"
 #include "solver/otm/integrator_assembly.hpp"
-#include "solver/otm/morton_order.hpp"
 #include "solver/otm/volume_patch.hpp"
 
 #include <algorithm>
@@ -29,9 +28,6 @@ Integrator::Integrator(Model& model, const Settings& settings)
 }
 
 void Integrator::initialise() {
-  // Points and nodes in Morton order, once, before anything refers to their indices (the first
-  // output and checkpoint already see this order, so a restart continues with it).
-  sortForLocality(model_);
   findBodyRanges();
   for (std::size_t b = 0; b < model_.bodies.size(); ++b)
     model_.materials[model_.bodies[b].material]->initialise(model_.points, body_points_[b].begin, body_points_[b].end);

@@ -1,5 +1,7 @@
 #include "solver/otm/morton_order.hpp"
 
+#include "core/error.hpp"
+
 #include <algorithm>
 #include <numeric>
 #include <utility>
@@ -65,6 +67,18 @@ void sortForLocality(Model& model) {
     sortRange(nodes.x, body.begin, body.end, lo, hi, order);
   nodes.permute(order);
   model.connectivity = Connectivity{};
+}
+
+void numberInOrder(Model& model) {
+  PointStore& points = model.points;
+  const IdIndex before(points.id);
+  for (auto& pair : model.adjacency) {
+    pair = {static_cast<Index>(before.find(pair[0])), static_cast<Index>(before.find(pair[1]))};
+    KESSLER_VERIFY(pair[0] >= 0 && pair[1] >= 0, "an adjacency pair names a point that is not in the store");
+    if (pair[0] > pair[1]) std::swap(pair[0], pair[1]);
+  }
+  std::iota(points.id.begin(), points.id.end(), Index{0});
+  std::iota(model.nodes.id.begin(), model.nodes.id.end(), Index{0});
 }
 
 }  // namespace kessler::otm

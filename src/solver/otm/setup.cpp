@@ -2,6 +2,7 @@
 
 #include "core/error.hpp"
 #include "core/log.hpp"
+#include "solver/otm/morton_order.hpp"
 
 #include <cmath>
 
@@ -110,6 +111,10 @@ Model buildModel(const Problem& problem) {
   for (const PlaneConstraint& plane : problem.planes)
     constrainPlane(model, plane.axis, plane.offset, plane.tolerance, plane.velocity, plane.body);
   if (problem.prepare) problem.prepare(model);
+  // Points and nodes in Morton order, numbered in it, once, before anything refers to their
+  // indices or ids (the first output and checkpoint already see this order; a restart continues it).
+  sortForLocality(model);
+  numberInOrder(model);
   return model;
 }
 

@@ -1,6 +1,6 @@
 // Morton ordering of points and nodes (solver/otm/morton_order.hpp): a permutation within
-// each body's ranges, keys in increasing order, the mesh adjacency (by point id) left as it was, and
-// the transpose built in parallel identical for any thread count.
+// each body's ranges, keys in increasing order, the mesh adjacency (by point id) left as it was, the
+// ids then numbered in that order, and the transpose built in parallel identical for any thread count.
 #include "geometry/structured_mesh.hpp"
 #include "material/neo_hookean.hpp"
 #include "solver/otm/morton_order.hpp"
@@ -66,6 +66,22 @@ TEST(Ordering, PermutesWithinBodiesAlongTheMortonCurve) {
   }
   // The adjacency links points by id: the sort leaves it as it was.
   EXPECT_EQ(model.adjacency, before.adjacency);
+
+  // Numbered in that order: ids 0, 1, ... and each link still joins the same two points.
+  const Model sorted = model;
+  numberInOrder(model);
+  for (LocalIndex p = 0; p < model.points.size(); ++p) EXPECT_EQ(model.points.id[p], p);
+  for (LocalIndex a = 0; a < model.nodes.size(); ++a) EXPECT_EQ(model.nodes.id[a], a);
+  ASSERT_EQ(model.adjacency.size(), sorted.adjacency.size());
+  const IdIndex old_index(sorted.points.id);
+  for (std::size_t k = 0; k < model.adjacency.size(); ++k) {
+    const auto [i, j] = model.adjacency[k];
+    EXPECT_LT(i, j);
+    const Vec3 a = sorted.points.x[old_index.find(sorted.adjacency[k][0])];
+    const Vec3 b = sorted.points.x[old_index.find(sorted.adjacency[k][1])];
+    EXPECT_TRUE((model.points.x[i] == a && model.points.x[j] == b) ||
+                (model.points.x[i] == b && model.points.x[j] == a));
+  }
 }
 
 TEST(Ordering, MortonKeyInterleavesTheAxes) {
