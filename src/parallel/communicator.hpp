@@ -29,7 +29,7 @@ class Session {
   Session& operator=(const Session&) = delete;
 
  private:
-  bool initialised_ = false;
+  [[maybe_unused]] bool initialised_ = false;  // by this Session (unused without MPI)
 };
 
 class Communicator {

@@ -28,6 +28,7 @@ class CellList {
   // Calls f(index, squared distance) for every binned position within `radius` of q.
   template <typename F>
   void forEachWithin(const Vec3& q, double radius, F&& f) const;
+
   // Calls f(cell) for every cell that may hold a position within `radius` of q; the binned
   // positions of a cell are indexAt(s) for s in [cellBegin(cell), cellEnd(cell)).
   template <typename F>
