@@ -131,6 +131,28 @@ std::vector<std::vector<std::byte>> Communicator::exchange(const std::vector<std
   return incoming;
 }
 
+void Communicator::exchangeWith(std::span<const int> to, const std::vector<std::vector<std::byte>>& outgoing,
+                                std::span<const int> from, std::vector<std::vector<std::byte>>& incoming) const {
+  if (!handle_) {
+    KESSLER_VERIFY(to.empty() && from.empty(), "messages between ranks in one process");
+    return;
+  }
+  constexpr int tag = 7;
+  std::vector<MPI_Request> requests;
+  requests.reserve(to.size() + from.size());
+  for (const int s : from) {
+    auto& buffer = incoming[static_cast<std::size_t>(s)];
+    requests.emplace_back();
+    check(MPI_Irecv(buffer.data(), count(buffer.size()), MPI_BYTE, s, tag, comm(handle_), &requests.back()), "receive");
+  }
+  for (const int r : to) {
+    const auto& buffer = outgoing[static_cast<std::size_t>(r)];
+    requests.emplace_back();
+    check(MPI_Isend(buffer.data(), count(buffer.size()), MPI_BYTE, r, tag, comm(handle_), &requests.back()), "send");
+  }
+  check(MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE), "wait for messages");
+}
+
 std::vector<std::vector<std::byte>> Communicator::allGather(std::span<const std::byte> mine) const {
   if (!handle_) return {std::vector<std::byte>(mine.begin(), mine.end())};
   std::vector<int> counts(static_cast<std::size_t>(size_)), offsets(counts.size());
@@ -174,6 +196,11 @@ void Communicator::max(std::span<double>) const {}
 std::vector<std::vector<std::byte>> Communicator::exchange(const std::vector<std::vector<std::byte>>& outgoing) const {
   KESSLER_VERIFY(outgoing.size() == 1, "an exchange with {} buffers in one process", outgoing.size());
   return outgoing;
+}
+
+void Communicator::exchangeWith(std::span<const int> to, const std::vector<std::vector<std::byte>>&,
+                                std::span<const int> from, std::vector<std::vector<std::byte>>&) const {
+  KESSLER_VERIFY(to.empty() && from.empty(), "messages between ranks in one process");
 }
 
 std::vector<std::vector<std::byte>> Communicator::allGather(std::span<const std::byte> mine) const {

@@ -60,6 +60,11 @@ class Communicator {
   // Every rank sends outgoing[r] to rank r and receives, in the result's [s], what rank s sent it.
   // outgoing.size() must be size().
   std::vector<std::vector<std::byte>> exchange(const std::vector<std::vector<std::byte>>& outgoing) const;
+  // Messages between neighbours only, no collective: sends outgoing[r] to each rank r in `to`, and
+  // receives into incoming[s], already sized to the bytes expected, from each rank s in `from`
+  // (both buffer lists are indexed by rank). What each pair sends must be agreed beforehand.
+  void exchangeWith(std::span<const int> to, const std::vector<std::vector<std::byte>>& outgoing,
+                    std::span<const int> from, std::vector<std::vector<std::byte>>& incoming) const;
   // Every rank's `mine`, in rank order, on every rank.
   std::vector<std::vector<std::byte>> allGather(std::span<const std::byte> mine) const;
   void barrier() const;

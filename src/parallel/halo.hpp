@@ -4,7 +4,8 @@
 // x_i +- reach_i (reach: the largest distance at which anything of the other rank can need it, a
 // support radius or an erosion ball). build() sends those entries whole and appends them behind
 // the store's owned entries, by the rank they come from and, within a rank, in the order that rank
-// holds them; refresh() later sends only chosen arrays again, into the same slots.
+// holds them; refresh() later sends only chosen arrays again, into the same slots, in messages
+// between neighbouring ranks alone.
 #include "parallel/communicator.hpp"
 #include "parallel/migrate.hpp"
 #include "parallel/partition.hpp"
@@ -40,6 +41,7 @@ class Halo {
   const Communicator* comm_ = nullptr;
   std::vector<std::vector<LocalIndex>> send_;  // per rank, the owned entries it needs
   std::vector<std::size_t> receive_;           // per rank, how many ghosts come from it
+  std::vector<int> to_, from_;                 // the ranks this rank sends to and receives from
   LocalIndex owned_ = 0, ghosts_ = 0;
 };
 
@@ -58,6 +60,12 @@ void Halo::build(Store& store, const Partition& partition, std::span<const doubl
       if (rank != comm.rank()) send_[static_cast<std::size_t>(rank)].push_back(i);
   }
   receive_ = unpackEntries(store, comm.exchange(packEntries(store, send_)));
+  to_.clear();
+  from_.clear();
+  for (std::size_t r = 0; r < ranks; ++r) {
+    if (!send_[r].empty()) to_.push_back(static_cast<int>(r));
+    if (receive_[r] > 0) from_.push_back(static_cast<int>(r));
+  }
   ghosts_ = static_cast<LocalIndex>(store.x.size()) - owned_;
 }
 
@@ -68,20 +76,23 @@ void Halo::refresh(std::vector<T>& values) const {
   KESSLER_VERIFY(values.size() == static_cast<std::size_t>(owned_ + ghosts_),
                  "refreshing an array of {} entries over {} owned and {} ghosts", values.size(), owned_, ghosts_);
   const auto ranks = static_cast<std::size_t>(comm_->size());
-  std::vector<std::vector<std::byte>> outgoing(ranks);
-  for (std::size_t r = 0; r < ranks; ++r) {
-    outgoing[r].resize(send_[r].size() * sizeof(T));
-    std::byte* at = outgoing[r].data();
-    for (const LocalIndex i : send_[r]) {
+  std::vector<std::vector<std::byte>> outgoing(ranks), incoming(ranks);
+  for (const int r : to_) {
+    const auto& list = send_[static_cast<std::size_t>(r)];
+    auto& buffer = outgoing[static_cast<std::size_t>(r)];
+    buffer.resize(list.size() * sizeof(T));
+    std::byte* at = buffer.data();
+    for (const LocalIndex i : list) {
       std::memcpy(at, &values[static_cast<std::size_t>(i)], sizeof(T));
       at += sizeof(T);
     }
   }
-  const std::vector<std::vector<std::byte>> incoming = comm_->exchange(outgoing);
+  for (const int s : from_)
+    incoming[static_cast<std::size_t>(s)].resize(receive_[static_cast<std::size_t>(s)] * sizeof(T));
+  // The sizes are known from build(): messages to and from the neighbours only, no collective.
+  comm_->exchangeWith(to_, outgoing, from_, incoming);
   std::size_t slot = static_cast<std::size_t>(owned_);
   for (std::size_t r = 0; r < ranks; ++r) {
-    KESSLER_VERIFY(incoming[r].size() == receive_[r] * sizeof(T), "a halo refresh of {} bytes for {} ghosts",
-                   incoming[r].size(), receive_[r]);
     if (receive_[r] > 0) std::memcpy(static_cast<void*>(&values[slot]), incoming[r].data(), incoming[r].size());
     slot += receive_[r];
   }

@@ -47,6 +47,18 @@ TEST(Ranks, ExchangeDeliversEachPairsBytes) {
   for (int r = 0; r < n; ++r) EXPECT_EQ(all[r], std::vector<std::byte>(static_cast<std::size_t>(r), std::byte(r)));
 }
 
+// Around a ring, with no collective: rank r sends r + 1 bytes of value r to the next rank only.
+TEST(Ranks, MessagesBetweenNeighboursOnly) {
+  const int n = world().size(), me = world().rank();
+  const int next = (me + 1) % n, previous = (me + n - 1) % n;
+  std::vector<std::vector<std::byte>> out(static_cast<std::size_t>(n)), in(static_cast<std::size_t>(n));
+  out[next].assign(static_cast<std::size_t>(me + 1), std::byte(me));
+  in[previous].resize(static_cast<std::size_t>(previous + 1));
+  const std::vector<int> to{next}, from{previous};
+  world().exchangeWith(to, out, from, in);
+  EXPECT_EQ(in[previous], std::vector<std::byte>(static_cast<std::size_t>(previous + 1), std::byte(previous)));
+}
+
 // The same 30,000 terms over 600 orders of magnitude, split among the ranks two ways (dealt round,
 // and in blocks): the global sum has the bits of one process's sum of them all.
 TEST(Ranks, ExactSumIndependentOfTheSplit) {
