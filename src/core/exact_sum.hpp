@@ -8,7 +8,7 @@
 //
 // A finite double is m 2^q with an integer |m| < 2^53 and -1126 <= q <= 971 (frexp scaled by
 // 2^53). The accumulator holds sum_i limb_i 2^(32 i - 1126) in signed 64-bit limbs of 32-bit
-// digits; a term adds at most 2^32 to any limb, so 2^29 terms fit before the digits need their
+// digits; a term adds less than 2^33 to any limb, so 2^29 terms fit before the digits need their
 // carries propagated, which add() then does. Infinities and NaN are counted apart: the sum is NaN
 // when any term is NaN or both infinities occur, else the infinity that occurs.
 #include "core/types.hpp"

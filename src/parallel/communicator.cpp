@@ -25,7 +25,6 @@ bool launched() {
 namespace {
 
 MPI_Comm world_comm = MPI_COMM_WORLD;
-MPI_Comm self_comm = MPI_COMM_SELF;
 
 bool running() {
   int initialised = 0, finalised = 0;
@@ -76,11 +75,6 @@ const Communicator& Communicator::world() {
     return Communicator(&world_comm, rank, size);
   }();
   return world;
-}
-
-const Communicator& Communicator::self() {
-  static const Communicator self = Communicator(running() ? &self_comm : nullptr, 0, 1);
-  return self;
 }
 
 void Communicator::sum(std::span<std::int64_t> values) const {
@@ -183,10 +177,6 @@ Session::~Session() = default;
 const Communicator& Communicator::world() {
   static const Communicator world(nullptr, 0, 1);
   return world;
-}
-
-const Communicator& Communicator::self() {
-  return world();
 }
 
 void Communicator::sum(std::span<std::int64_t>) const {}

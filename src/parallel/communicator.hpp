@@ -36,8 +36,6 @@ class Communicator {
  public:
   // All the ranks of the run (one process when MPI is not running).
   static const Communicator& world();
-  // One process alone, whatever the run: for work that stays on its rank.
-  static const Communicator& self();
 
   int rank() const { return rank_; }
   int size() const { return size_; }
