@@ -49,6 +49,35 @@ TEST(CellList, MatchesBruteForceInCellThenSlotOrder) {
   }
 }
 
+// A rank of a distributed run holds a subset of the positions, in the same relative order, with a
+// different bounding box. Its cells lie on the same lattice (given the cell size), so a query meets
+// its candidates in the same order as over the whole set: the sums over them agree bitwise. With
+// cells anchored at each set's own corner (as before 2026-11-27) this test fails.
+TEST(CellList, ASubsetMeetsItsCandidatesInTheWholeSetsOrder) {
+  const std::vector<Vec3> x = randomCloud(3000, 5, 1.0);
+  std::vector<Vec3> subset;
+  std::vector<LocalIndex> whole_index;  // of each subset entry
+  for (LocalIndex a = 0; a < static_cast<LocalIndex>(x.size()); ++a)
+    if (x[a][0] > -0.37 && x[a][1] < 0.61) {
+      subset.push_back(x[a]);
+      whole_index.push_back(a);
+    }
+  CellList whole, part;
+  whole.build(x, static_cast<LocalIndex>(x.size()), 0.113);
+  part.build(subset, static_cast<LocalIndex>(subset.size()), 0.113);
+  const double radius = 0.19;
+  int compared = 0;
+  for (const Vec3& q : randomCloud(300, 13, 1.0)) {
+    if (q[0] - radius <= -0.37 || q[1] + radius >= 0.61) continue;  // every candidate in the subset
+    std::vector<LocalIndex> from_whole, from_part;
+    whole.forEachWithin(q, radius, [&](LocalIndex a, double) { from_whole.push_back(a); });
+    part.forEachWithin(q, radius, [&](LocalIndex k, double) { from_part.push_back(whole_index[k]); });
+    ASSERT_EQ(from_part, from_whole);
+    ++compared;
+  }
+  EXPECT_GT(compared, 50);
+}
+
 // A few far-away positions must not blow the grid up; queries stay correct.
 TEST(CellList, SparseOutliersStayCorrect) {
   std::vector<Vec3> x = randomCloud(500, 3, 1.0);
