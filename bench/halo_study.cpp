@@ -91,12 +91,13 @@ void study(double target_points, const Communicator& comm) {
   for (std::size_t a = 0; a < nodes.x.size(); ++a) node_owner[a] = partition.owner(nodes.x[a]);
   migrate(nodes, node_owner, comm);
 
+  const LocalIndex own_points = points.owned, own_nodes = nodes.owned;  // build() merges the ghosts in
   Halo point_halo, node_halo;
   point_halo.build(points, partition, std::vector<double>(static_cast<std::size_t>(points.owned), support), comm);
   node_halo.build(nodes, partition, std::vector<double>(static_cast<std::size_t>(nodes.owned), 2.0 * support), comm);
 
-  const Spread owned = spread(comm, points.owned), ghosts = spread(comm, point_halo.ghosts());
-  const Spread ghost_nodes = spread(comm, node_halo.ghosts()), owned_nodes = spread(comm, nodes.owned);
+  const Spread owned = spread(comm, own_points), ghosts = spread(comm, point_halo.ghosts());
+  const Spread ghost_nodes = spread(comm, node_halo.ghosts()), owned_nodes = spread(comm, own_nodes);
   const Spread neighbours = spread(comm, std::max(point_halo.neighbours(), node_halo.neighbours()));
   if (comm.root())
     fmt::print(

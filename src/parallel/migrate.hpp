@@ -1,12 +1,13 @@
 #pragma once
 // Moving store entries between ranks (docs/parallel.md): each entry goes to the rank its
 // destination names, carried as bytes by the store's one list of arrays (packFields). After a
-// migration a store holds what it kept and what it received, ordered by the rank each entry came
-// from and, within a rank, as that rank held them; all owned.
+// migration a store holds what it kept and what it received, in id order; all owned.
 #include "parallel/communicator.hpp"
 #include "particles/store_fields.hpp"
 
+#include <algorithm>
 #include <cstring>
+#include <numeric>
 #include <span>
 #include <vector>
 
@@ -58,6 +59,11 @@ void migrate(Store& store, std::span<const int> destination, const Communicator&
   resizeFields(store, 0);
   unpackEntries(store, incoming);
   store.owned = static_cast<LocalIndex>(store.x.size());
+  // In id order: the order of the whole (docs/parallel.md, "One order on every rank").
+  std::vector<LocalIndex> order(store.x.size());
+  std::iota(order.begin(), order.end(), LocalIndex{0});
+  std::sort(order.begin(), order.end(), [&](LocalIndex a, LocalIndex b) { return store.id[a] < store.id[b]; });
+  permuteFields(store, order);
 }
 
 }  // namespace kessler::parallel

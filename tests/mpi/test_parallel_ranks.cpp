@@ -194,14 +194,15 @@ TEST(Ranks, HaloHoldsExactlyTheEntriesThatReachTheSubdomain) {
   PointStore points = lattice();
   Partition partition(world());
   migrate(points, partition.balance(points.x, points.id, work(points)), world());
-  std::vector<double> reach(static_cast<std::size_t>(points.owned));
-  for (LocalIndex p = 0; p < points.owned; ++p) reach[p] = points.id[p] % 3 == 0 ? 0.1851 : 0.1234;
-  Halo halo;
-  halo.build(points, partition, reach, world());
+  for (LocalIndex p = 1; p < points.owned; ++p) ASSERT_LT(points.id[p - 1], points.id[p]) << "migrate: id order";
+  const LocalIndex own = points.owned;
+  std::vector<double> reach(static_cast<std::size_t>(own));
+  for (LocalIndex p = 0; p < own; ++p) reach[p] = points.id[p] % 3 == 0 ? 0.1851 : 0.1234;
 
+  // The brute-force answer, from every rank's own points.
   const Box mine = partition.subdomain(world().rank());
-  const auto ids = gather(std::vector<Index>(points.id.begin(), points.id.begin() + points.owned));
-  const auto positions = gather(std::vector<Vec3>(points.x.begin(), points.x.begin() + points.owned));
+  const auto ids = gather(points.id);
+  const auto positions = gather(points.x);
   const auto reaches = gather(reach);
   std::vector<Index> expected;
   for (int r = 0; r < world().size(); ++r) {
@@ -212,22 +213,43 @@ TEST(Ranks, HaloHoldsExactlyTheEntriesThatReachTheSubdomain) {
       if ((lo.array() <= mine.hi.array()).all() && (hi.array() >= mine.lo.array()).all()) expected.push_back(ids[r][i]);
     }
   }
+  std::sort(expected.begin(), expected.end());
+
+  Halo halo;
+  halo.build(points, partition, reach, world());
   ASSERT_EQ(halo.ghosts(), static_cast<LocalIndex>(expected.size()));
   EXPECT_GT(halo.ghosts(), 0);
-  EXPECT_EQ(std::vector<Index>(points.id.begin() + points.owned, points.id.end()), expected);
+  EXPECT_EQ(points.owned, own + halo.ghosts());
+  // Ghosts among the own entries, the whole store in id order.
+  std::vector<Index> ghost_ids;
+  LocalIndex own_count = 0;
+  for (LocalIndex p = 0; p < points.owned; ++p) {
+    if (p > 0) {
+      EXPECT_LT(points.id[p - 1], points.id[p]);
+    }
+    if (halo.ghost(p))
+      ghost_ids.push_back(points.id[p]);
+    else
+      ++own_count;
+  }
+  EXPECT_EQ(ghost_ids, expected);
+  EXPECT_EQ(own_count, own);
   EXPECT_EQ(world().sum(static_cast<std::int64_t>(halo.sent())), world().sum(std::int64_t{halo.ghosts()}));
   EXPECT_GE(halo.neighbours(), 1);
 
   std::vector<double> value(points.x.size(), -1.0);
-  for (LocalIndex p = 0; p < points.owned; ++p) value[p] = 0.5 + 2.0 * static_cast<double>(points.id[p]);
+  for (LocalIndex p = 0; p < points.owned; ++p)
+    if (!halo.ghost(p)) value[p] = 0.5 + 2.0 * static_cast<double>(points.id[p]);
   halo.refresh(value);
-  for (std::size_t g = static_cast<std::size_t>(points.owned); g < value.size(); ++g)
-    EXPECT_EQ(value[g], 0.5 + 2.0 * static_cast<double>(points.id[g]));
+  for (LocalIndex p = 0; p < points.owned; ++p) EXPECT_EQ(value[p], 0.5 + 2.0 * static_cast<double>(points.id[p]));
 
-  // Built again (as after the points moved): the old ghosts go first.
+  // Built again (as after the points moved): the old ghosts go first, the own entries stay.
+  halo.dropGhosts(points);
+  EXPECT_EQ(points.owned, own);
+  EXPECT_EQ(points.id, ids[static_cast<std::size_t>(world().rank())]);
   halo.build(points, partition, reach, world());
   EXPECT_EQ(halo.ghosts(), static_cast<LocalIndex>(expected.size()));
-  EXPECT_EQ(points.x.size(), static_cast<std::size_t>(points.owned + halo.ghosts()));
+  EXPECT_THROW(halo.build(points, partition, reach, world()), Error);  // still holds ghosts: refused before any message
 }
 
 }  // namespace

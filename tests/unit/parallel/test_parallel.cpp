@@ -74,7 +74,10 @@ TEST(Migrate, OneProcessKeepsEveryEntryInOrder) {
 TEST(Halo, OneProcessHasNoGhosts) {
   PointStore points;
   resizeFields(points, 3);
-  for (LocalIndex p = 0; p < 3; ++p) points.x[p] = Vec3(p, 0, 0);
+  for (LocalIndex p = 0; p < 3; ++p) {
+    points.x[p] = Vec3(p, 0, 0);
+    points.id[p] = 5 + p;
+  }
   Partition partition(Communicator::world());
   partition.balance(points.x, points.id, std::vector<double>(3, 1.0));
   Halo halo;
@@ -88,6 +91,23 @@ TEST(Halo, OneProcessHasNoGhosts) {
   EXPECT_EQ(values, (std::vector<double>{1, 2, 3}));
   std::vector<double> too_many(4, 0.0);
   EXPECT_THROW(halo.refresh(too_many), Error);
+  halo.dropGhosts(points);
+  EXPECT_EQ(points.owned, 3);
+  std::swap(points.id[0], points.id[2]);  // out of id order: refused
+  EXPECT_THROW(halo.build(points, partition, std::vector<double>(3, 10.0), Communicator::world()), Error);
+}
+
+TEST(Migrate, LeavesTheStoreInIdOrder) {
+  PointStore points;
+  resizeFields(points, 3);
+  const Index ids[] = {7, 2, 5};
+  for (LocalIndex p = 0; p < 3; ++p) {
+    points.id[p] = ids[p];
+    points.mass[p] = static_cast<double>(ids[p]);
+  }
+  migrate(points, std::vector<int>(3, 0), Communicator::world());
+  EXPECT_EQ(points.id, (std::vector<Index>{2, 5, 7}));
+  EXPECT_EQ(points.mass, (std::vector<double>{2, 5, 7}));
 }
 
 }  // namespace
