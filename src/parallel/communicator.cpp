@@ -12,10 +12,6 @@
 
 namespace kessler::parallel {
 
-bool built() {
-  return KESSLER_HAVE_MPI != 0;
-}
-
 bool launched() {
   return std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr || std::getenv("PMIX_RANK") != nullptr;
 }
@@ -165,10 +161,6 @@ std::vector<std::vector<std::byte>> Communicator::allGather(std::span<const std:
   return each;
 }
 
-void Communicator::barrier() const {
-  if (handle_) check(MPI_Barrier(comm(handle_)), "barrier");
-}
-
 #else  // one process: every collective is the identity
 
 Session::Session(int&, char**&) {}
@@ -196,8 +188,6 @@ void Communicator::exchangeWith(std::span<const int> to, const std::vector<std::
 std::vector<std::vector<std::byte>> Communicator::allGather(std::span<const std::byte> mine) const {
   return {std::vector<std::byte>(mine.begin(), mine.end())};
 }
-
-void Communicator::barrier() const {}
 
 #endif
 

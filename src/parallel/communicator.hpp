@@ -12,8 +12,6 @@
 
 namespace kessler::parallel {
 
-// True when this build has MPI and Zoltan.
-bool built();
 // True when this process was started by an MPI launcher (Open MPI's mpirun sets
 // OMPI_COMM_WORLD_SIZE, PMIx launchers PMIX_RANK): only then does a Session initialise MPI, so
 // that a plain `kessler run` never starts MPI's runtime.
@@ -65,7 +63,6 @@ class Communicator {
                     std::span<const int> from, std::vector<std::vector<std::byte>>& incoming) const;
   // Every rank's `mine`, in rank order, on every rank.
   std::vector<std::vector<std::byte>> allGather(std::span<const std::byte> mine) const;
-  void barrier() const;
 
   // The MPI communicator (an MPI_Comm) for libraries that take one (Zoltan); null without MPI.
   const void* handle() const { return handle_; }

@@ -14,7 +14,6 @@
 
 #include <algorithm>
 #include <cstring>
-#include <numeric>
 #include <span>
 #include <vector>
 
@@ -94,9 +93,7 @@ void Halo::build(Store& store, const Partition& partition, std::span<const doubl
 
   // Ghosts among the own entries in id order: where each entry goes, then the lists follow.
   const std::size_t n = store.x.size();
-  std::vector<LocalIndex> order(n);
-  std::iota(order.begin(), order.end(), LocalIndex{0});
-  std::sort(order.begin(), order.end(), [&](LocalIndex a, LocalIndex b) { return store.id[a] < store.id[b]; });
+  const std::vector<LocalIndex> order = idOrder(store);
   std::vector<LocalIndex> at(n);
   for (std::size_t k = 0; k < n; ++k) {
     KESSLER_VERIFY(k == 0 || store.id[order[k - 1]] != store.id[order[k]], "entry {} is both own and a ghost",

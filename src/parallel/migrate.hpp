@@ -5,9 +5,7 @@
 #include "parallel/communicator.hpp"
 #include "particles/store_fields.hpp"
 
-#include <algorithm>
 #include <cstring>
-#include <numeric>
 #include <span>
 #include <vector>
 
@@ -59,11 +57,7 @@ void migrate(Store& store, std::span<const int> destination, const Communicator&
   resizeFields(store, 0);
   unpackEntries(store, incoming);
   store.owned = static_cast<LocalIndex>(store.x.size());
-  // In id order: the order of the whole (docs/parallel.md, "One order on every rank").
-  std::vector<LocalIndex> order(store.x.size());
-  std::iota(order.begin(), order.end(), LocalIndex{0});
-  std::sort(order.begin(), order.end(), [&](LocalIndex a, LocalIndex b) { return store.id[a] < store.id[b]; });
-  permuteFields(store, order);
+  permuteFields(store, idOrder(store));
 }
 
 }  // namespace kessler::parallel

@@ -34,12 +34,11 @@ Box boundsOf(const Communicator& comm, std::span<const Vec3> x) {
 }  // namespace
 
 double imbalance(const Communicator& comm, double work) {
-  std::array<double, 1> largest{work};
-  comm.max(largest);
+  const double largest = comm.max(work);
   ExactSum total;
   total.add(work);
   const double mean = comm.sum(total) / comm.size();
-  return mean > 0.0 ? largest[0] / mean : 1.0;
+  return mean > 0.0 ? largest / mean : 1.0;
 }
 
 #if KESSLER_HAVE_MPI

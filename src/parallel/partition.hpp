@@ -29,7 +29,6 @@ class Partition {
   // Cuts the points of all ranks (x, their ids, unique over the ranks, and their work, > 0) into
   // one subdomain per rank, and returns the rank each of this rank's points belongs to. Collective.
   std::vector<int> balance(std::span<const Vec3> x, std::span<const Index> ids, std::span<const double> work);
-  bool balanced() const { return balanced_; }
 
   // The rank whose subdomain holds x (anywhere in space: the outer subdomains reach to infinity).
   int owner(const Vec3& x) const;

@@ -5,8 +5,10 @@
 #include "core/error.hpp"
 #include "core/types.hpp"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstring>
+#include <numeric>
 #include <span>
 #include <type_traits>
 #include <vector>
@@ -26,6 +28,16 @@ void permuteFields(Store& store, const std::vector<LocalIndex>& order) {
     for (std::size_t i = 0; i < order.size(); ++i) scratch[i] = values[static_cast<std::size_t>(order[i])];
     values.swap(scratch);
   });
+}
+
+// The permutation that puts a store's entries in id order (for permuteFields): the order of the
+// whole run, which any rank's part keeps (docs/parallel.md, "One order on every rank").
+template <class Store>
+std::vector<LocalIndex> idOrder(const Store& store) {
+  std::vector<LocalIndex> order(store.id.size());
+  std::iota(order.begin(), order.end(), LocalIndex{0});
+  std::sort(order.begin(), order.end(), [&](LocalIndex a, LocalIndex b) { return store.id[a] < store.id[b]; });
+  return order;
 }
 
 // Every array of `store` resized to n (new entries take their field's fresh value); all owned.

@@ -1,6 +1,7 @@
 // The parallel layer on several ranks (run by mpirun with 2 and 3 ranks; tests/mpi/CMakeLists.txt):
 // collectives, exact sums that do not depend on how the terms are split among ranks, Zoltan's
 // subdomains, and the migration of points into them and back.
+#include "../wide_terms.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/halo.hpp"
 #include "parallel/migrate.hpp"
@@ -12,8 +13,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
-#include <numeric>
-#include <random>
 #include <vector>
 
 namespace kessler::parallel {
@@ -62,11 +61,7 @@ TEST(Ranks, MessagesBetweenNeighboursOnly) {
 // The same 30,000 terms over 600 orders of magnitude, split among the ranks two ways (dealt round,
 // and in blocks): the global sum has the bits of one process's sum of them all.
 TEST(Ranks, ExactSumIndependentOfTheSplit) {
-  std::mt19937_64 random(3);
-  std::uniform_real_distribution<double> mantissa(-1.0, 1.0);
-  std::uniform_int_distribution<int> exponent(-300, 300);
-  std::vector<double> terms(30000);
-  for (double& t : terms) t = std::ldexp(mantissa(random), exponent(random));
+  const std::vector<double> terms = testing::wideRangeTerms(30000, 3);
   ExactSum all;
   for (double t : terms) all.add(t);
   const double reference = all.value();
@@ -167,17 +162,13 @@ TEST(Ranks, PointsMigrateIntoTheirSubdomainsAndBackBitwise) {
   migrate(points, owner, world());
   expectDistributed(partition, points, total);
 
-  // Everything back to rank 0, undone and in id order: bitwise the original.
+  // Everything back to rank 0 (migrate leaves it in id order) and undone: bitwise the original.
   migrate(points, std::vector<int>(static_cast<std::size_t>(points.owned), 0), world());
   if (!world().root()) {
     EXPECT_EQ(points.owned, 0);
     return;
   }
   ASSERT_EQ(points.owned, original.owned);
-  std::vector<LocalIndex> order(static_cast<std::size_t>(points.owned));
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](LocalIndex a, LocalIndex b) { return points.id[a] < points.id[b]; });
-  permuteFields(points, order);
   for (LocalIndex p = 0; p < points.owned; ++p) points.x[p] -= Vec3(0.3 * original.x[p][1], 0.0, -0.2);
   EXPECT_EQ(points.id, original.id);
   EXPECT_EQ(points.v, original.v);

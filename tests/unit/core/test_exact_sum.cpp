@@ -1,6 +1,7 @@
 // Exact sums (core/exact_sum.hpp): the total is the exact sum rounded once, whatever the order of
 // the terms and however they are split, and it survives cancellation and overflow that a running
 // double sum does not.
+#include "../../wide_terms.hpp"
 #include "core/exact_sum.hpp"
 
 #include <gtest/gtest.h>
@@ -55,11 +56,8 @@ TEST(ExactSum, EqualsTheExactSumRoundedOnceInAnyOrder) {
 // Terms over 600 orders of magnitude, both signs: the result's bits do not depend on the order, on
 // splitting the terms into accumulators that are then added, or on the thread count.
 TEST(ExactSum, TheSameBitsForAnyOrderAndAnySplit) {
-  std::mt19937_64 random(11);
-  std::uniform_real_distribution<double> mantissa(-1.0, 1.0);
-  std::uniform_int_distribution<int> exponent(-300, 300);
-  std::vector<double> terms(20000);
-  for (double& t : terms) t = std::ldexp(mantissa(random), exponent(random));
+  std::vector<double> terms = testing::wideRangeTerms(20000, 11);
+  std::mt19937_64 random(11);  // for the shuffles
   const double reference = sumOf(terms);
   ASSERT_TRUE(std::isfinite(reference));
   for (int shuffle = 0; shuffle < 3; ++shuffle) {
