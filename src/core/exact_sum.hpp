@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <utility>
 
 namespace kessler {
 
@@ -118,8 +119,9 @@ class ExactSum {
 // sum_{i < n} term(i) of K components (term returns an Eigen vector of size K), each exactly and
 // rounded once, over the threads: each adds its share into its own accumulators, and those add
 // exactly. The same bits for any thread count and any order.
+// The accumulators of exactSums before rounding, for adding across processes.
 template <int K, typename F>
-Eigen::Matrix<double, K, 1> exactSums(LocalIndex n, F&& term) {
+std::array<ExactSum, K> exactPartialSums(LocalIndex n, F&& term) {
   std::array<ExactSum, K> total;
 #pragma omp parallel
   {
@@ -132,6 +134,12 @@ Eigen::Matrix<double, K, 1> exactSums(LocalIndex n, F&& term) {
 #pragma omp critical(kessler_exact_sum)
     for (int k = 0; k < K; ++k) total[k].add(mine[k]);
   }
+  return total;
+}
+
+template <int K, typename F>
+Eigen::Matrix<double, K, 1> exactSums(LocalIndex n, F&& term) {
+  std::array<ExactSum, K> total = exactPartialSums<K>(n, std::forward<F>(term));
   Eigen::Matrix<double, K, 1> sum;
   for (int k = 0; k < K; ++k) sum[k] = total[k].value();
   return sum;

@@ -32,6 +32,12 @@ class Halo {
   // The ghosts' values of one array (sized as the store), sent again by their owners. Collective.
   template <class T>
   void refresh(std::vector<T>& values) const;
+  // Every array of the store (its fields()) sent again for the ghosts. Collective.
+  template <class Store>
+  void refreshFields(Store& store) const;
+
+  // Per entry of the store, 1 for a ghost (empty before the first build: none).
+  const std::vector<std::uint8_t>& ghostMask() const { return ghost_; }
 
   LocalIndex ghosts() const { return ghosts_; }
   bool ghost(LocalIndex i) const { return !ghost_.empty() && ghost_[static_cast<std::size_t>(i)] != 0; }
@@ -45,6 +51,11 @@ class Halo {
   int neighbours() const { return static_cast<int>(std::max(to_.size(), from_.size())); }
 
  private:
+  // Sends pack(rank, buffer) to each rank this rank sends to, and calls unpack(rank, bytes) for each
+  // message from a rank it receives from, whose size incoming_bytes(rank) gives.
+  template <class Pack, class Size, class Unpack>
+  void send(Pack&& pack, Size&& incoming_bytes, Unpack&& unpack) const;
+
   const Communicator* comm_ = nullptr;
   std::vector<std::vector<LocalIndex>> send_;  // per rank, the own entries it needs
   std::vector<std::vector<LocalIndex>> slot_;  // per rank, where each ghost from it sits, in its order
@@ -122,35 +133,58 @@ void Halo::build(Store& store, const Partition& partition, std::span<const doubl
   ghosts_ = static_cast<LocalIndex>(n) - own;
 }
 
+template <class Pack, class Size, class Unpack>
+void Halo::send(Pack&& pack, Size&& incoming_bytes, Unpack&& unpack) const {
+  KESSLER_VERIFY(comm_, "a halo refreshed before it was built");
+  const auto ranks = static_cast<std::size_t>(comm_->size());
+  std::vector<std::vector<std::byte>> outgoing(ranks), incoming(ranks);
+  for (const int r : to_) pack(send_[static_cast<std::size_t>(r)], outgoing[static_cast<std::size_t>(r)]);
+  for (const int s : from_)
+    incoming[static_cast<std::size_t>(s)].resize(incoming_bytes(slot_[static_cast<std::size_t>(s)]));
+  // The sizes are known from build(): messages to and from the neighbours only, no collective.
+  comm_->exchangeWith(to_, outgoing, from_, incoming);
+  for (const int s : from_) unpack(slot_[static_cast<std::size_t>(s)], incoming[static_cast<std::size_t>(s)]);
+}
+
 template <class T>
 void Halo::refresh(std::vector<T>& values) const {
   static_assert(bytewise<T>, "a refreshed array must hold plain values");
-  KESSLER_VERIFY(comm_, "a halo refreshed before it was built");
   KESSLER_VERIFY(ghost_.empty() || values.size() == ghost_.size(),
                  "refreshing an array of {} entries for a store of {}", values.size(), ghost_.size());
-  const auto ranks = static_cast<std::size_t>(comm_->size());
-  std::vector<std::vector<std::byte>> outgoing(ranks), incoming(ranks);
-  for (const int r : to_) {
-    const auto& list = send_[static_cast<std::size_t>(r)];
-    auto& buffer = outgoing[static_cast<std::size_t>(r)];
-    buffer.resize(list.size() * sizeof(T));
-    std::byte* cursor = buffer.data();
-    for (const LocalIndex i : list) {
-      std::memcpy(cursor, &values[static_cast<std::size_t>(i)], sizeof(T));
-      cursor += sizeof(T);
-    }
-  }
-  for (const int s : from_)
-    incoming[static_cast<std::size_t>(s)].resize(slot_[static_cast<std::size_t>(s)].size() * sizeof(T));
-  // The sizes are known from build(): messages to and from the neighbours only, no collective.
-  comm_->exchangeWith(to_, outgoing, from_, incoming);
-  for (const int s : from_) {
-    const std::byte* cursor = incoming[static_cast<std::size_t>(s)].data();
-    for (const LocalIndex slot : slot_[static_cast<std::size_t>(s)]) {
-      std::memcpy(static_cast<void*>(&values[static_cast<std::size_t>(slot)]), cursor, sizeof(T));
-      cursor += sizeof(T);
-    }
-  }
+  send(
+      [&](const std::vector<LocalIndex>& list, std::vector<std::byte>& buffer) {
+        buffer.resize(list.size() * sizeof(T));
+        std::byte* cursor = buffer.data();
+        for (const LocalIndex i : list) {
+          std::memcpy(cursor, &values[static_cast<std::size_t>(i)], sizeof(T));
+          cursor += sizeof(T);
+        }
+      },
+      [](const std::vector<LocalIndex>& slots) { return slots.size() * sizeof(T); },
+      [&](const std::vector<LocalIndex>& slots, const std::vector<std::byte>& buffer) {
+        const std::byte* cursor = buffer.data();
+        for (const LocalIndex slot : slots) {
+          std::memcpy(static_cast<void*>(&values[static_cast<std::size_t>(slot)]), cursor, sizeof(T));
+          cursor += sizeof(T);
+        }
+      });
+}
+
+template <class Store>
+void Halo::refreshFields(Store& store) const {
+  KESSLER_VERIFY(ghost_.empty() || store.x.size() == ghost_.size(),
+                 "refreshing a store of {} entries with a halo of {}", store.x.size(), ghost_.size());
+  std::size_t entry_bytes = 0;  // one entry of every array
+  Store::fields(store, [&](const char*, const auto& values, const auto&) {
+    entry_bytes += sizeof(typename std::remove_reference_t<decltype(values)>::value_type);
+  });
+  send([&](const std::vector<LocalIndex>& list,
+           std::vector<std::byte>& buffer) { packFields(store, std::span<const LocalIndex>(list), buffer); },
+       [&](const std::vector<LocalIndex>& slots) { return slots.size() * entry_bytes; },
+       [&](const std::vector<LocalIndex>& slots, const std::vector<std::byte>& buffer) {
+         const std::size_t end = unpackFieldsInto(store, buffer, 0, std::span<const LocalIndex>(slots));
+         KESSLER_VERIFY(end == buffer.size(), "a refresh of {} bytes held {}", buffer.size(), end);
+       });
 }
 
 }  // namespace kessler::parallel

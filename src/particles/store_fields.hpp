@@ -49,9 +49,13 @@ void resizeFields(Store& store, std::size_t n) {
 
 // Values copied as bytes: trivially copyable ones, and Eigen's fixed vectors and matrices, which
 // are plain runs of doubles.
+// A struct of such values opts in by specialising PlainValue.
 static_assert(sizeof(Vec3) == 3 * sizeof(double) && sizeof(Mat3) == 9 * sizeof(double));
 template <class T>
-inline constexpr bool bytewise = std::is_trivially_copyable_v<T> || std::is_same_v<T, Vec3> || std::is_same_v<T, Mat3>;
+struct PlainValue
+    : std::bool_constant<std::is_trivially_copyable_v<T> || std::is_same_v<T, Vec3> || std::is_same_v<T, Mat3>> {};
+template <class T>
+inline constexpr bool bytewise = PlainValue<T>::value;
 
 // Appends entries `which` of every array to `buffer`, array by array in fields() order (raw bytes:
 // the arrays hold trivially copyable values).
@@ -85,6 +89,26 @@ std::size_t unpackFields(Store& store, std::span<const std::byte> buffer, std::s
     values.resize(first + count);
     if (count > 0) std::memcpy(static_cast<void*>(&values[first]), buffer.data() + offset, count * sizeof(T));
     offset += count * sizeof(T);
+  });
+  return offset;
+}
+
+// Overwrites entries `slots` of every array with values packed by packFields for as many entries,
+// from `buffer` at `offset` (a refresh of ghosts); returns the offset after them.
+template <class Store>
+std::size_t unpackFieldsInto(Store& store, std::span<const std::byte> buffer, std::size_t offset,
+                             std::span<const LocalIndex> slots) {
+  Store::fields(store, [&](const char* name, auto& values, const auto&) {
+    using T = typename std::remove_reference_t<decltype(values)>::value_type;
+    static_assert(bytewise<T>, "a store array must hold plain values to be unpacked");
+    KESSLER_VERIFY(offset + slots.size() * sizeof(T) <= buffer.size(),
+                   "unpacking {} entries of '{}' past the buffer's end", slots.size(), name);
+    for (const LocalIndex i : slots) {
+      KESSLER_VERIFY(i >= 0 && static_cast<std::size_t>(i) < values.size(),
+                     "unpacking into entry {} of '{}', which holds {}", i, name, values.size());
+      std::memcpy(static_cast<void*>(&values[static_cast<std::size_t>(i)]), buffer.data() + offset, sizeof(T));
+      offset += sizeof(T);
+    }
   });
   return offset;
 }

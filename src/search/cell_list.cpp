@@ -7,10 +7,15 @@
 
 namespace kessler {
 
-void CellList::build(std::span<const Vec3> x, LocalIndex count, double cell_size) {
-  KESSLER_VERIFY(cell_size > 0.0 && std::isfinite(cell_size), "cell list: invalid cell size {}", cell_size);
-  // The bounding box (min and max are exact, so the parallel reduction gives the same box for
-  // any thread count).
+namespace {
+
+struct Bounds {
+  Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();
+};
+
+// The bounding box (min and max are exact, so the parallel reduction gives the same box for any
+// thread count).
+Bounds boundsOf(std::span<const Vec3> x, LocalIndex count) {
   double lo0 = 0.0, lo1 = 0.0, lo2 = 0.0, hi0 = 0.0, hi1 = 0.0, hi2 = 0.0;
   if (count > 0) {
     lo0 = hi0 = x[0][0];
@@ -26,19 +31,37 @@ void CellList::build(std::span<const Vec3> x, LocalIndex count, double cell_size
     hi1 = std::max(hi1, x[a][1]);
     hi2 = std::max(hi2, x[a][2]);
   }
-  const Vec3 lo(lo0, lo1, lo2), hi(hi0, hi1, hi2);
-  KESSLER_VERIFY(lo.allFinite() && hi.allFinite(), "cell list: non-finite node position");
-  // Keep the grid at most ~4 cells per position: a few far-flung fragments must not make
-  // the grid (and the memory) explode.
-  const Vec3 extent = (hi - lo).cwiseMax(Vec3::Constant(1e-300));
+  const Bounds b{Vec3(lo0, lo1, lo2), Vec3(hi0, hi1, hi2)};
+  KESSLER_VERIFY(b.lo.allFinite() && b.hi.allFinite(), "cell list: non-finite node position");
+  return b;
+}
+
+// The cell size, at least `cell_size`, that keeps the grid at most ~4 cells per position: a few
+// far-flung fragments must not make the grid (and the memory) explode.
+double enlarged(const Bounds& b, LocalIndex count, double cell_size) {
+  KESSLER_VERIFY(cell_size > 0.0 && std::isfinite(cell_size), "cell list: invalid cell size {}", cell_size);
+  const Vec3 extent = (b.hi - b.lo).cwiseMax(Vec3::Constant(1e-300));
   const double max_cells = 4.0 * std::max<double>(count, 1) + 64.0;
   auto cellCount = [&](double cell) {
     double n = 1.0;
     for (int d = 0; d < 3; ++d) n *= std::floor(extent[d] / cell) + 1.0;
     return n;
   };
-  cell_ = cell_size;
-  while (cellCount(cell_) > max_cells) cell_ *= 1.26;
+  double cell = cell_size;
+  while (cellCount(cell) > max_cells) cell *= 1.26;
+  return cell;
+}
+
+}  // namespace
+
+double CellList::sizeFor(std::span<const Vec3> x, LocalIndex count, double cell_size) {
+  return enlarged(boundsOf(x, count), count, cell_size);
+}
+
+void CellList::build(std::span<const Vec3> x, LocalIndex count, double cell_size) {
+  const Bounds bounds = boundsOf(x, count);
+  const Vec3 &lo = bounds.lo, &hi = bounds.hi;
+  cell_ = enlarged(bounds, count, cell_size);
   // The cells lie on a lattice through the origin of space, not through this set's corner: the cell
   // a position falls in, and so the order in which a query visits positions, is then the same in
   // any set that holds it, given the cell size (a distributed run's ranks hold overlapping sets and

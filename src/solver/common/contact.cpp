@@ -1,5 +1,9 @@
 #include "solver/common/contact.hpp"
 
+#include "core/error.hpp"
+
+#include <cstring>
+
 namespace kessler {
 
 void recordContacts(ParticleState& state, std::span<const std::uint64_t> touching) {
@@ -12,6 +16,21 @@ void recordContacts(ParticleState& state, std::span<const std::uint64_t> touchin
         state.bodies[a].touched |= bodyBit(static_cast<int>(b));
         state.bodies[b].touched |= bodyBit(static_cast<int>(a));
       }
+  }
+}
+
+void joinContacts(std::vector<BodyInfo>& bodies, const parallel::Communicator& comm) {
+  if (comm.size() == 1) return;
+  std::vector<std::uint64_t> mine(bodies.size());
+  for (std::size_t b = 0; b < bodies.size(); ++b) mine[b] = bodies[b].touched;
+  for (const std::vector<std::byte>& theirs : comm.allGather(std::as_bytes(std::span<const std::uint64_t>(mine)))) {
+    KESSLER_VERIFY(theirs.size() == mine.size() * sizeof(std::uint64_t), "contact records of {} bytes for {} bodies",
+                   theirs.size(), mine.size());
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      std::uint64_t bits = 0;
+      std::memcpy(&bits, theirs.data() + b * sizeof bits, sizeof bits);
+      bodies[b].touched |= bits;
+    }
   }
 }
 

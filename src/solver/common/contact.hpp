@@ -8,6 +8,7 @@
 // and records which bodies touched (BodyInfo::touched), which debris contact needs.
 //
 // A sliding contact (a master surface, the slave pushed back along its normal) is the next kind.
+#include "parallel/communicator.hpp"
 #include "solver/common/particle_state.hpp"
 
 #include <algorithm>
@@ -75,6 +76,9 @@ class SeizingProbe {
 // BodyInfo::touched, both ways: a body touches itself and every body whose carriers its points
 // took (bit b of touching[a]), and those touch it.
 void recordContacts(ParticleState& state, std::span<const std::uint64_t> touching);
+// Every rank's records of BodyInfo::touched joined (a distributed run: each rank sees the contacts
+// of its own points). Collective.
+void joinContacts(std::vector<BodyInfo>& bodies, const parallel::Communicator& comm);
 
 // Marks the points released as debris since the last call (passes_through still 0) with the
 // bodies they pass through: their own, and those their body has touched so far.

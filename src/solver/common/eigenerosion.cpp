@@ -1,6 +1,6 @@
 #include "solver/common/eigenerosion.hpp"
 
-#include "core/exact_sum.hpp"
+#include "solver/common/own_sums.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -16,7 +16,7 @@ bool Eigenerosion::active(const ParticleState& model) const {
                      [](const MaterialPtr& m) { return m->fractureEnergy() > 0.0; });
 }
 
-LocalIndex Eigenerosion::apply(ParticleState& model) {
+LocalIndex Eigenerosion::apply(ParticleState& model, const Share& share) {
   if (!active(model)) return 0;
   PointStore& points = model.points;
   const LocalIndex np = points.owned;
@@ -39,13 +39,19 @@ LocalIndex Eigenerosion::apply(ParticleState& model) {
     candidate_.push_back(p);
   }
   const auto count = static_cast<LocalIndex>(candidate_.size());
-  if (count == 0) return 0;
   candidate_eps_.resize(static_cast<std::size_t>(count));
-  const double eps_sum = exactSum(count, [&](LocalIndex k) {
+  // Over a distributed run's own candidates and every rank, and enlarged alike: the cells order each
+  // ball's sum, which must be the same bits on every rank.
+  // (Every rank takes part, with candidates or without.)
+  const Eigen::Vector2d eps_sum = ownSums<2>(Share{{}, share.comm}, count, [&](LocalIndex k) {
     candidate_eps_[k] = erosion_radius_ * points.spacing(candidate_[k]);
-    return candidate_eps_[k];
+    return share.own(candidate_[k]) ? Eigen::Vector2d(candidate_eps_[k], 1.0) : Eigen::Vector2d(0.0, 0.0);
   });
-  cells_.build(candidate_x_, count, eps_sum / count);
+  if (!(eps_sum[1] > 0.0)) return 0;
+  double cell_size = eps_sum[0] / eps_sum[1];
+  if (share.comm) cell_size = share.max(CellList::sizeFor(candidate_x_, count, cell_size));
+  if (count == 0) return 0;
+  cells_.build(candidate_x_, count, cell_size);
   // G_p is C_eps times a mass-weighted mean of W over the ball, so it cannot exceed C_eps times
   // the largest W in the cells the ball touches. Points whose bound stays below G_c (most of a
   // target away from the impact) skip the ball sum; the decisions are exactly the same.
@@ -90,7 +96,7 @@ LocalIndex Eigenerosion::apply(ParticleState& model) {
     const double pressure = std::max(-points.stress[p].trace() / 3.0 - q, 0.0);
     points.fail(p);
     points.stress[p] = -(pressure + q) * Mat3::Identity();
-    ++failed;
+    if (share.own(p)) ++failed;
   }
   return failed;
 }

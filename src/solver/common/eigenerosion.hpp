@@ -11,6 +11,7 @@
 // A point that erodes fails: it loses its strength and its tension but keeps the pressure it is
 // under, and leaves its body as debris once it bears none (solver/common/release.hpp).
 #include "search/cell_list.hpp"
+#include "solver/common/own_sums.hpp"
 #include "solver/common/particle_state.hpp"
 
 #include <vector>
@@ -28,7 +29,8 @@ class Eigenerosion {
   // G_p >= G_c (PointStore::fail, stress reduced to its compression). Decisions use the state
   // before this call, so the result does not depend on the thread count. Returns the number of
   // points that failed.
-  LocalIndex apply(ParticleState& model);
+  // With `share` (a distributed run), the cells are agreed by every rank and only own points count.
+  LocalIndex apply(ParticleState& model, const Share& share = {});
   bool active(const ParticleState& model) const;
 
  private:

@@ -1,13 +1,13 @@
 #include "solver/common/energies.hpp"
 
-#include "core/exact_sum.hpp"
+#include "solver/common/own_sums.hpp"
 
 namespace kessler {
 
-Energies pointEnergies(const PointStore& points, double stored) {
+Energies pointEnergies(const PointStore& points, double stored, const Share& share) {
   Energies e;
   using Terms = Eigen::Matrix<double, 5, 1>;
-  const Terms sum = exactSums<5>(points.owned, [&](LocalIndex p) {
+  const Terms sum = ownSums<5>(share, points.owned, [&](LocalIndex p) {
     const Vec3 momentum = points.mass[p] * points.v[p];
     Terms t;
     t << 0.5 * momentum.dot(points.v[p]), points.mass[p] * points.energy[p], momentum;

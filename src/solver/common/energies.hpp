@@ -3,6 +3,7 @@
 // summary.json, the health checks).
 #include "core/types.hpp"
 #include "particles/store.hpp"
+#include "solver/common/own_sums.hpp"
 
 namespace kessler {
 
@@ -17,8 +18,8 @@ struct Energies {
   double total() const { return kinetic + internal + stabilisation; }
 };
 
-// The budget of the owned points, summed in a fixed order (the same bits for any thread count),
-// with `stored` as the stabilisation energy.
-Energies pointEnergies(const PointStore& points, double stored);
+// The budget of the points, summed exactly (the same bits for any thread count and partition), with
+// `stored` as the stabilisation energy; over a rank's own points and every rank with `share`.
+Energies pointEnergies(const PointStore& points, double stored, const Share& share = {});
 
 }  // namespace kessler

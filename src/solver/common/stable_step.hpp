@@ -2,6 +2,7 @@
 // The stable (CFL) time step over material points (docs/theory.md §4 step 7).
 #include "core/error.hpp"
 #include "particles/store.hpp"
+#include "solver/common/own_sums.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -24,19 +25,19 @@ double smallestStretch(const Mat3& F);
 // by more than cfl/3 (10% at the default) in a step, |div v| dt <= cfl/3, as LULESH's dvovmax
 // bounds it: the bound that sets the step where there is no sound speed (a cold gas, p = 0);
 // elsewhere the viscosity's share of the signal speed makes it redundant. length(p): the method's
-// length scale of point p. The minimum is exact, so any thread count gives the same step. Throws if
-// nothing bounds the step.
+// length scale of point p. With `share`, over a rank's own points and every rank. The minimum is exact, so any thread
+// count gives the same step. Throws if nothing bounds the step.
 template <typename Length>
 double stableStep(const PointStore& points, std::span<const double> volume_rate, double bound, double cfl,
-                  Length&& length) {
+                  Length&& length, const Share& share = {}) {
   double dt = std::numeric_limits<double>::infinity();
 #pragma omp parallel for schedule(static) reduction(min : dt)
   for (LocalIndex p = 0; p < points.owned; ++p) {
-    if (points.debris(p)) continue;
+    if (points.debris(p) || !share.own(p)) continue;
     if (points.sound_speed[p] > 0.0) dt = std::min(dt, length(p) / points.sound_speed[p]);
     if (volume_rate[p] != 0.0) dt = std::min(dt, 1.0 / (3.0 * std::abs(volume_rate[p])));
   }
-  dt = std::min(dt, bound);
+  dt = share.min(std::min(dt, bound));
   KESSLER_VERIFY(std::isfinite(dt) && dt > 0.0,
                  "no stable time step: every point is debris or at rest without a sound speed, or the model is empty");
   return cfl * dt;

@@ -1,5 +1,6 @@
 #include "solver/otm/integrator.hpp"
 
+#include "approx/lme.hpp"
 #include "core/error.hpp"
 #include "solver/common/debris_contact.hpp"
 #include "solver/common/release.hpp"
@@ -14,9 +15,10 @@
 
 namespace kessler::otm {
 
-Integrator::Integrator(Model& model, const Settings& settings)
+Integrator::Integrator(Model& model, const Settings& settings, Distribution* distribution)
     : model_(model),
       settings_(settings),
+      distribution_(distribution),
       neighbourhoods_(settings),
       erosion_(settings.erosion_radius),
       release_(settings.erosion_radius) {
@@ -28,6 +30,7 @@ Integrator::Integrator(Model& model, const Settings& settings)
 }
 
 void Integrator::initialise() {
+  if (distribution_) distribution_->split(model_);
   findBodyRanges();
   for (std::size_t b = 0; b < model_.bodies.size(); ++b)
     model_.materials[model_.bodies[b].material]->initialise(model_.points, body_points_[b].begin, body_points_[b].end);
@@ -35,7 +38,8 @@ void Integrator::initialise() {
     ScopedPhase phase(timers_, "constitutive");
     updateMaterials(0.0);
   }
-  neighbourhoods_.update(model_);
+  rebuildHalos();
+  neighbourhoods_.update(model_, share());
   timers_.add("search", neighbourhoods_.searchSeconds());
   timers_.add("shape functions", neighbourhoods_.shapeSeconds());
   initialVolumeRates();
@@ -58,7 +62,35 @@ void Integrator::initialVolumeRates() {
   }
 }
 
+void Integrator::rebuildHalos() {
+  if (!distribution_) return;
+  requireDistributable();
+  distribution_->rebuild(model_, volume_rate_, lme::cutoffRadius(settings_.lme_gamma, 1.0, settings_.lme_tolerance),
+                         settings_.erosion_radius);
+  findBodyRanges();
+}
+
+void Integrator::requireDistributable() const {
+  const PointStore& points = model_.points;
+  const Share own = share();
+  bool broken = false;
+  for (LocalIndex p = 0; p < points.owned && !broken; ++p) broken = own.own(p) && points.broken[p] != 0;
+  if (own.any(broken))
+    throw Error(
+        fmt::format("t = {:.6g} s: material has failed, and a distributed run does not yet carry failed "
+                    "material (its release and debris; docs/parallel.md, \"The distributed step\")",
+                    time_));
+}
+
+template <class Fail>
+void Integrator::stopIfAny(bool failed_here, Fail&& fail) const {
+  const bool anywhere = share().any(failed_here);
+  if (failed_here) fail();
+  if (anywhere) throw NumericalError("another rank stopped the step (its message says why)");
+}
+
 void Integrator::restore(const IntegratorState& state) {
+  KESSLER_VERIFY(!distribution_, "a distributed run does not yet restart from a checkpoint");
   time_ = state.time;
   dt_last_ = state.dt_last;
   dt_next_ = state.dt_next;
@@ -100,6 +132,11 @@ void Integrator::advance(double dt) {
     ScopedPhase phase(timers_, "node update");
     // Discrete Euler-Lagrange equations for a variable step (docs/theory.md §4 step 2).
     updateNodes(dt, 0.5 * (dt_last_ + dt));
+    // A ghost node gathered only the points this rank holds: its owner's update replaces it.
+    if (distribution_) {
+      distribution_->refreshNodes(model_.nodes);
+      distribution_->refreshNodes(increment_);
+    }
   }
   {
     ScopedPhase phase(timers_, "point update");
@@ -108,16 +145,23 @@ void Integrator::advance(double dt) {
   {
     ScopedPhase phase(timers_, "constitutive");
     updateMaterials(dt);
-    stabilisation_energy_ += patch_.closeStep(model_.points, settings_.volume_stabilisation);
+    stabilisation_energy_ += patch_.closeStep(model_.points, settings_.volume_stabilisation, share());
     balanceEnergy();
   }
   {
     ScopedPhase phase(timers_, "erosion");
-    eroded_ += erosion_.apply(model_);
+    eroded_ += erosion_.apply(model_, share());
+    if (distribution_) requireDistributable();
     release_.apply(model_);
     if (settings_.debris_contact) markNewDebris(model_);
   }
-  neighbourhoods_.update(model_);
+  rebuildHalos();
+  neighbourhoods_.update(model_, share());
+  if (distribution_ && share().any(neighbourhoods_.widenedPoints() > 0))
+    throw NumericalError(
+        fmt::format("step {}, t = {:.6g} s: a point's search went beyond its support radius, which a distributed run's "
+                    "halo does not yet hold (docs/parallel.md, \"The distributed step\")",
+                    steps_ + 1, time_ + dt));
   timers_.add("search", neighbourhoods_.searchSeconds());
   timers_.add("shape functions", neighbourhoods_.shapeSeconds());
   time_ += dt;
@@ -177,6 +221,7 @@ void Integrator::updatePoints() {
   transfer_heat_.assign(static_cast<std::size_t>(points.owned), 0.0);
   force_work_.assign(static_cast<std::size_t>(points.owned), 0.0);
   const double kick = dt_step_ > 0.0 ? dt_average_ / dt_step_ : 1.0;
+  const Share own = share();
 #pragma omp parallel for schedule(static) reduction(min : bad)
   for (LocalIndex p = 0; p < points.owned; ++p) {
     if (points.debris(p)) {
@@ -220,18 +265,26 @@ void Integrator::updatePoints() {
       points.dF[p].setIdentity();
       continue;
     }
-    if (!(J > 0.0) || !std::isfinite(J)) bad = std::min(bad, p);
+    if ((!(J > 0.0) || !std::isfinite(J)) && own.own(p)) bad = std::min(bad, p);
     j_point_[p] = J;
     points.x[p] += dx;
     points.v[p] += dv;
     points.dF[p] = dF;
   }
-  if (bad < points.owned)
+  stopIfAny(bad < points.owned, [&] {
     failAtPoint(
         bad, fmt::format("volume inverted or collapsed: det(dF) = {:.6g} over the step", points.dF[bad].determinant()));
+  });
   stabilisation_energy_ +=
       patch_.apply(conn, model_.nodes.owned, settings_.volume_averaging, settings_.volume_stabilisation,
-                   settings_.volume_relaxation, dt_step_, points, j_point_);
+                   settings_.volume_relaxation, dt_step_, points, j_point_, own);
+  // A ghost point near the edge of the halo moved with nodes it may not all hold, and averaged over
+  // patches it may not all see: its owner's values replace what this rank got.
+  if (distribution_) {
+    distribution_->refreshPoints(points);
+    for (std::vector<double>* a : {&j_point_, &transfer_heat_, &force_work_}) distribution_->refreshPoints(*a);
+    patch_.forEachPointArray([&](std::vector<double>& a) { distribution_->refreshPoints(a); });
+  }
   volume_rate_.resize(static_cast<std::size_t>(points.owned));
 #pragma omp parallel for schedule(static)
   for (LocalIndex p = 0; p < points.owned; ++p) {
@@ -291,12 +344,14 @@ void Integrator::updateMaterials(double dt) {
     failAtPoint(static_cast<LocalIndex>(e.point()), e.what());
   }
   LocalIndex bad = points.owned;
+  const Share own = share();
 #pragma omp parallel for schedule(static) reduction(min : bad)
   for (LocalIndex p = 0; p < points.owned; ++p)
-    if (!points.stress[p].allFinite() || !std::isfinite(points.energy[p]) ||
-        !(points.debris(p) || points.sound_speed[p] >= 0.0))  // debris takes no part in the time step
+    if (own.own(p) && (!points.stress[p].allFinite() || !std::isfinite(points.energy[p]) ||
+                       !(points.debris(p) || points.sound_speed[p] >= 0.0)))  // debris takes no part in the time step
       bad = std::min(bad, p);
-  if (bad < points.owned) failAtPoint(bad, "the material update gave a non-finite stress, energy or sound speed");
+  stopIfAny(bad < points.owned,
+            [&] { failAtPoint(bad, "the material update gave a non-finite stress, energy or sound speed"); });
 }
 
 double stepLength(const Model& model, LocalIndex p) {
@@ -326,12 +381,12 @@ double stepLength(const Model& model, LocalIndex p) {
 // and no longer than debris contact allows.
 double Integrator::stableStep() const {
   const double bound = settings_.debris_contact ? contact_.stepBound() : std::numeric_limits<double>::infinity();
-  return kessler::stableStep(model_.points, volume_rate_, bound, settings_.cfl,
-                             [&](LocalIndex p) { return stepLength(model_, p); });
+  return kessler::stableStep(
+      model_.points, volume_rate_, bound, settings_.cfl, [&](LocalIndex p) { return stepLength(model_, p); }, share());
 }
 
 Energies Integrator::energies() const {
-  return pointEnergies(model_.points, stabilisation_energy_ + contact_.storedEnergy());
+  return pointEnergies(model_.points, stabilisation_energy_ + contact_.storedEnergy(), share());
 }
 
 void Integrator::failAtPoint(LocalIndex p, const std::string& what) const {

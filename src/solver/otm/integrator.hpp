@@ -9,11 +9,26 @@
 #include "solver/common/energies.hpp"
 #include "solver/common/release.hpp"
 #include "solver/common/stable_step.hpp"
+#include "solver/otm/distribution.hpp"
 #include "solver/otm/integrator_assembly.hpp"
 #include "solver/otm/model.hpp"
 #include "solver/otm/neighbourhoods.hpp"
 #include "solver/otm/settings.hpp"
 #include "solver/otm/volume_patch.hpp"
+
+namespace kessler::otm {
+
+// Each node's displacement and velocity increment of a step (FLIP-style transfer to points), side
+// by side: the points' gather reads both for each of its nodes.
+struct NodeIncrement {
+  Vec3 du, dv;
+};
+
+}  // namespace kessler::otm
+
+// Two vectors: sent as bytes to a distributed run's ghosts.
+template <>
+struct kessler::PlainValue<kessler::otm::NodeIncrement> : std::true_type {};
 
 namespace kessler::otm {
 
@@ -40,7 +55,9 @@ struct IntegratorState {
 
 class Integrator {
  public:
-  Integrator(Model& model, const Settings& settings);
+  // With a `distribution`, this rank runs its part of the model (docs/parallel.md, "The distributed
+  // step"); initialise() splits the model every rank built alike.
+  Integrator(Model& model, const Settings& settings, Distribution* distribution = nullptr);
 
   // Builds shape functions, the initial material state and the first time step.
   void initialise();
@@ -79,19 +96,25 @@ class Integrator {
   void heatPoints(const std::vector<double>& heat);
   double stableStep() const;
   void findBodyRanges();
+  // A distributed run: the halos fetched afresh, before the search (Distribution::rebuild).
+  void rebuildHalos();
+  // What sums and minima over points count: all (one process) or this rank's own, over every rank.
+  Share share() const { return distribution_ ? distribution_->pointShare() : Share{}; }
+  // Stops every rank of a distributed run when `failed_here` is true on any: this rank calls fail()
+  // (which throws); the others throw that another rank stopped the step. One process: fail() if failed_here.
+  template <class Fail>
+  void stopIfAny(bool failed_here, Fail&& fail) const;
+  // Stops a distributed run at what stage one of the distributed step does not yet do.
+  void requireDistributable() const;
   [[noreturn]] void failAtPoint(LocalIndex p, const std::string& what) const;
 
   Model& model_;
   Settings settings_;
+  Distribution* distribution_ = nullptr;
   Neighbourhoods neighbourhoods_;
   Eigenerosion erosion_;
   DebrisRelease release_;
   DebrisContact contact_;
-  // Each node's displacement and velocity increment of the step (FLIP-style transfer to points),
-  // side by side: the points' gather reads both for each of its nodes.
-  struct NodeIncrement {
-    Vec3 du, dv;
-  };
   std::vector<NodeIncrement> increment_;
   std::vector<double> j_point_;  // det(dF) per point (after averaging)
   // J per point, heat to add: before the material update the kinetic energy the step's transfer took,

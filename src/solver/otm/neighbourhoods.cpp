@@ -113,6 +113,7 @@ int Neighbourhoods::gather(const Model& model, LocalIndex p, double scale, bool 
       }
     }
     if (static_cast<int>(s.visible) >= settings_.min_neighbours || attempt == 12) break;
+    if (attempt == 0) s.widened.push_back(p);
     radius *= 1.25;
   }
   return static_cast<int>(s.node.size());
@@ -138,7 +139,7 @@ lme::Result Neighbourhoods::shapeFunctionsAt(Model& model, LocalIndex p, std::sp
 // best-conditioned of its attempts, the first included, and the run stops only if none converged.
 // Rare, so the connectivity is then rebuilt with the retried rows (not at all when every retried
 // point keeps its first row).
-void Neighbourhoods::retryPoints(Model& model) {
+void Neighbourhoods::retryPoints(Model& model, const Share& share) {
   PointStore& points = model.points;
   Connectivity& conn = model.connectivity;
   const LocalIndex np = points.owned;
@@ -191,8 +192,10 @@ void Neighbourhoods::retryPoints(Model& model) {
                       points.x[p].allFinite();
     if (torn) {
       points.fail(p);
-      ++torn_;
-      torn_mass_ += points.mass[p];
+      if (share.own(p)) {
+        ++torn_;
+        torn_mass_ += points.mass[p];
+      }
     }
     if (r.status != lme::Status::converged && points.failed(p)) {
       // Failed material outside the hull of every neighbourhood (or at its very edge) is leaving
@@ -210,12 +213,13 @@ void Neighbourhoods::retryPoints(Model& model) {
       continue;
     } else if (r.status != lme::Status::converged && best_attempt > 0) {
       if (best_attempt != 3) attempt(best_attempt);  // intact: the best-conditioned retry
-    } else if (r.status != lme::Status::converged && failed == np) {
+    } else if (r.status != lme::Status::converged && failed == np && share.own(p)) {
       failed = p;
       failure = r;
       // A point whose own position is not finite finds no nodes: say what is wrong with it.
       if (!points.x[p].allFinite()) failure.status = lme::Status::not_finite;
     }
+    if (share.own(p)) widened_ += 1;
     s.rows.insert(s.rows.end(), s.node.begin(), s.node.begin() + n);
     start[k + 1] = start[k] + static_cast<std::size_t>(n);
     count_[p] = n;
@@ -259,7 +263,7 @@ void Neighbourhoods::retryPoints(Model& model) {
   conn.dN = std::move(rebuilt.dN);
 }
 
-void Neighbourhoods::update(Model& model) {
+void Neighbourhoods::update(Model& model, const Share& share) {
   NodeStore& nodes = model.nodes;
   PointStore& points = model.points;
   Connectivity& conn = model.connectivity;
@@ -275,14 +279,16 @@ void Neighbourhoods::update(Model& model) {
   spacing_.resize(static_cast<std::size_t>(np));
 #pragma omp parallel for schedule(static)
   for (LocalIndex p = 0; p < np; ++p) spacing_[p] = points.spacing(p);
-  const Eigen::Vector2d sum = exactSums<2>(np, [&](LocalIndex p) {
+  const Eigen::Vector2d sum = ownSums<2>(share, np, [&](LocalIndex p) {
     return points.broken[p] ? Eigen::Vector2d(0.0, 0.0) : Eigen::Vector2d(spacing_[p], 1.0);
   });
   const double spacing_sum = sum[0];
   const auto intact = static_cast<LocalIndex>(sum[1]);
   const double cell_size =
       intact > 0 ? lme::cutoffRadius(settings_.lme_gamma, spacing_sum / intact, settings_.lme_tolerance) : 1.0;
-  cells_.build(nodes.x, nodes.size(), std::max(cell_size, 1e-300));
+  double node_cell = std::max(cell_size, 1e-300);
+  if (share.comm) node_cell = share.max(CellList::sizeFor(nodes.x, nodes.size(), node_cell));
+  cells_.build(nodes.x, nodes.size(), node_cell);
   if (settings_.crack_visibility) buildOccluders(model, cell_size);
 
   const int threads = omp_get_max_threads();
@@ -305,6 +311,7 @@ void Neighbourhoods::update(Model& model) {
     Scratch& s = scratch_[static_cast<std::size_t>(t)];
     s.contact.reset(bodies);
     s.retry.clear();
+    s.widened.clear();
     // Chunks of points, dynamically scheduled (points near cracks cost more: the visibility
     // test); a chunk's node lists go to the searching thread's rows, in point order, and the
     // chunk remembers which thread and where.
@@ -367,10 +374,14 @@ void Neighbourhoods::update(Model& model) {
 #pragma omp critical
     shape_time = std::max(shape_time, my_shape_time);
   }
-  retryPoints(model);
+  widened_ = 0;
+  for (const Scratch& s : scratch_)
+    for (const LocalIndex p : s.widened) widened_ += share.own(p) ? 1 : 0;
+  retryPoints(model, share);
   std::vector<std::uint64_t> touching(bodies, 0);
   for (const Scratch& s : scratch_) s.contact.addTouching(touching);
   recordContacts(model, touching);
+  if (share.comm) joinContacts(model.bodies, *share.comm);
   conn.buildTranspose(nodes.size(), transpose_scratch_);
   const double total = watch.seconds();
   shape_seconds_ = shape_time;

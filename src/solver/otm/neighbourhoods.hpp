@@ -6,6 +6,7 @@
 #include "approx/lme.hpp"
 #include "search/cell_list.hpp"
 #include "solver/common/contact.hpp"
+#include "solver/common/own_sums.hpp"
 #include "solver/otm/model.hpp"
 #include "solver/otm/settings.hpp"
 
@@ -18,9 +19,11 @@ class Neighbourhoods {
  public:
   explicit Neighbourhoods(const Settings& settings) : settings_(settings) {}
 
-  // Rebuilds the connectivity of all owned points. Throws NumericalError naming the point if
-  // its shape functions cannot be built (outside the convex hull of its nodes, no nodes).
-  void update(Model& model);
+  // Rebuilds the connectivity of all points held. Throws NumericalError naming the point if
+  // its shape functions cannot be built (outside the convex hull of its nodes, no nodes). In a
+  // distributed run (`share`: the rank's own points and the ranks), the cell sizes are agreed by all
+  // ranks, only own points count and throw, and the bodies' contact records join every rank's.
+  void update(Model& model, const Share& share = {});
 
   // Time spent in the search and in the shape functions during the last update.
   double searchSeconds() const { return search_seconds_; }
@@ -28,6 +31,9 @@ class Neighbourhoods {
   // Intact points released so far because they lay outside the hull of every neighbourhood tried
   // (torn from their body; retryPoints), and their mass.
   LocalIndex tornPoints() const { return torn_; }
+  // Own points of the last update whose search went beyond their cut-off radius (too few nodes
+  // within it, or a retry): a distributed run's halo may not hold what such a search needs.
+  LocalIndex widenedPoints() const { return widened_; }
   double tornMass() const { return torn_mass_; }
 
  private:
@@ -41,6 +47,7 @@ class Neighbourhoods {
     std::vector<double> N;  // shape functions of retried points
     std::vector<Vec3> dN;
     SeizingProbe contact;
+    std::vector<LocalIndex> widened;  // points whose search went beyond their cut-off radius
     std::vector<Vec3> offsets;
     std::vector<Vec3> occluders;  // eroded points near the point being processed
   };
@@ -65,7 +72,7 @@ class Neighbourhoods {
   // Retries the points whose shape functions failed or are ill-conditioned with larger radii and
   // smoother supports; an intact point outside the hull of every attempt is torn (fails and is
   // released); throws if an intact point's shape functions still fail otherwise.
-  void retryPoints(Model& model);
+  void retryPoints(Model& model, const Share& share);
 
   Settings settings_;
   CellList cells_;
@@ -82,6 +89,7 @@ class Neighbourhoods {
   double cutoff_per_spacing_ = 0.0;  // the LME cut-off radius over h (a logarithm and a root)
   double search_seconds_ = 0.0, shape_seconds_ = 0.0;
   LocalIndex torn_ = 0;
+  LocalIndex widened_ = 0;
   double torn_mass_ = 0.0;
 };
 

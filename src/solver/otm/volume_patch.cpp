@@ -43,7 +43,8 @@ double VolumePatch::relax(PointStore& points, LocalIndex p, double alpha, double
 }
 
 double VolumePatch::apply(const Connectivity& conn, LocalIndex owned_nodes, bool averaging, double alpha,
-                          double relaxation, double dt, PointStore& points, std::vector<double>& j) {
+                          double relaxation, double dt, PointStore& points, std::vector<double>& j,
+                          const Share& share) {
   work_.assign(static_cast<std::size_t>(points.owned), 0.0);
   defect_step_.assign(static_cast<std::size_t>(points.owned), 0.0);
   signal2_.assign(static_cast<std::size_t>(points.owned), 0.0);
@@ -118,12 +119,12 @@ double VolumePatch::apply(const Connectivity& conn, LocalIndex owned_nodes, bool
     points.dF[p] *= std::exp((average - own) / 3.0);
     j[p] = points.dF[p].determinant();
   }
-  return exactSum(points.owned, [&](LocalIndex p) { return work_[p]; });
+  return ownSum(share, points.owned, [&](LocalIndex p) { return work_[p]; });
 }
 
-double VolumePatch::closeStep(const PointStore& points, double alpha) {
+double VolumePatch::closeStep(const PointStore& points, double alpha, const Share& share) {
   if (!(alpha > 0.0) || defect_step_.size() != static_cast<std::size_t>(points.owned)) return 0.0;
-  return exactSum(points.owned, [&](LocalIndex p) {
+  return ownSum(share, points.owned, [&](LocalIndex p) {
     if (points.debris(p)) return 0.0;
     const double S = pressure(points, p, alpha);
     double second = -0.5 * S * points.volume[p] * defect_step_[p];

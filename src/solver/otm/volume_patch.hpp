@@ -9,6 +9,7 @@
 //   - the record of what averaging took away (PointStore::volume_defect), which the stabilisation
 //     pressure pushes back on in the forces, so that the averaging has no zero-energy mode.
 #include "particles/store.hpp"
+#include "solver/common/own_sums.hpp"
 #include "solver/otm/connectivity.hpp"
 
 #include <array>
@@ -28,15 +29,24 @@ class VolumePatch {
   // With `relaxation` k > 0 the defect of an intact point first relaxes over the step `dt` with the
   // time constant of k wave transits of the point's spacing; the stored energy that frees is booked
   // as negative work (the compatible energy update gives it to the point as heat).
+  // The work returned by it and closeStep() is summed over the points `share` counts.
   double apply(const Connectivity& conn, LocalIndex owned_nodes, bool averaging, double alpha, double relaxation,
-               double dt, PointStore& points, std::vector<double>& j);
+               double dt, PointStore& points, std::vector<double>& j, const Share& share = {});
   // The rest of the step's stabilisation work, with the pressure after the material update (the one
   // the next step's forces carry): apply() books the step's defect at the old pressure's half. With
   // the relaxation on, also the change of an intact point's stored energy that the update's new
   // signal speed made at the same defect. Afterwards work() holds each point's whole share of the step.
-  double closeStep(const PointStore& points, double alpha);
+  double closeStep(const PointStore& points, double alpha, const Share& share = {});
   // Per point, the stabilisation's work of the last step, J (both halves once closeStep() has run).
   const std::vector<double>& work() const { return work_; }
+  // f(array) for each per-point array apply() leaves for closeStep() and work(): what a distributed
+  // run refreshes for its ghosts.
+  template <class F>
+  void forEachPointArray(F&& f) {
+    f(work_);
+    f(defect_step_);
+    f(signal2_);
+  }
 
   // The stabilisation pressure of every owned point (0 for debris) in `s`, for the nodal forces: each
   // point's forces carry its own stress plus this pressure (docs/theory.md §4).

@@ -1,0 +1,44 @@
+#pragma once
+// Sums, minima and flags over the entries a rank owns, taken over every rank of a distributed run
+// (docs/parallel.md): ghosts are someone else's and count there. Without a communicator (one
+// process) every entry is own. Sums are exact (core/exact_sum.hpp), so they are the same bits for
+// any partition.
+#include "core/exact_sum.hpp"
+#include "parallel/communicator.hpp"
+
+#include <cstdint>
+#include <span>
+
+namespace kessler {
+
+// Which entries of a store are this rank's own, and the ranks to reduce over (null: one process).
+struct Share {
+  std::span<const std::uint8_t> ghost;  // per entry, 1 for a ghost; empty: none
+  const parallel::Communicator* comm = nullptr;
+
+  bool own(LocalIndex i) const { return ghost.empty() || ghost[static_cast<std::size_t>(i)] == 0; }
+  double min(double value) const { return comm ? comm->min(value) : value; }
+  double max(double value) const { return comm ? comm->max(value) : value; }
+  std::int64_t sum(std::int64_t value) const { return comm ? comm->sum(value) : value; }
+  bool any(bool flag) const { return comm ? comm->any(flag) : flag; }
+};
+
+// sum over the own entries i < n of term(i) (an Eigen vector of K components), over every rank.
+// term is called for ghosts too (what it writes on the way is kept), and their terms left out.
+template <int K, typename F>
+Eigen::Matrix<double, K, 1> ownSums(const Share& share, LocalIndex n, F&& term) {
+  std::array<ExactSum, K> partial = exactPartialSums<K>(n, [&](LocalIndex i) {
+    const Eigen::Matrix<double, K, 1> t = term(i);
+    return share.own(i) ? t : Eigen::Matrix<double, K, 1>::Zero().eval();
+  });
+  Eigen::Matrix<double, K, 1> sum;
+  for (int k = 0; k < K; ++k) sum[k] = share.comm ? share.comm->sum(partial[k]) : partial[k].value();
+  return sum;
+}
+
+template <typename F>
+double ownSum(const Share& share, LocalIndex n, F&& term) {
+  return ownSums<1>(share, n, [&](LocalIndex i) { return Eigen::Matrix<double, 1, 1>(term(i)); })[0];
+}
+
+}  // namespace kessler

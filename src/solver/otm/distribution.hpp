@@ -1,0 +1,66 @@
+#pragma once
+// A rank's part of a distributed OTM run (docs/parallel.md, "The distributed step"): the points and
+// nodes in its subdomain, which it owns, and ghosts, copies of the other ranks' entries that its
+// own entries reach. The integrator computes every entry it holds; the owners' values replace what
+// it got wrong for ghosts (refresh), so that after each refresh every entry a rank holds is bitwise
+// what one process holds for it.
+//
+// Stage one of the design: the halos are fetched afresh before every search, deep enough that each
+// own entry's stencils are whole (points within two support radii, nodes within three and a half),
+// and the points and nodes that left a subdomain move to their new owner then. The cuts are those
+// of the first balance.
+#include "parallel/communicator.hpp"
+#include "parallel/halo.hpp"
+#include "parallel/partition.hpp"
+#include "solver/common/own_sums.hpp"
+#include "solver/otm/model.hpp"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace kessler::otm {
+
+class Distribution {
+ public:
+  explicit Distribution(const parallel::Communicator& comm);
+
+  // Keeps this rank's part of a model that every rank built alike: RCB cuts of the points (each
+  // weighted by one), and the points and nodes in this rank's subdomain. No ghosts yet (rebuild).
+  void split(Model& model);
+  // Drops the ghosts, moves each own point and node to the rank whose subdomain now holds it, and
+  // fetches the ghosts for supports of `cutoff_per_spacing` times a point's spacing (its LME
+  // cut-off) and erosion balls of `erosion_radius` times it. `volume_rate` (per point; zeros if it
+  // has another size) travels with the points. Collective; the connectivity is stale afterwards
+  // (the search rebuilds it).
+  void rebuild(Model& model, std::vector<double>& volume_rate, double cutoff_per_spacing, double erosion_radius);
+
+  // After a phase that got ghosts wrong: the owners' values of one array, or of every array of a store.
+  template <class T>
+  void refreshPoints(std::vector<T>& values) const {
+    points_.refresh(values);
+  }
+  template <class T>
+  void refreshNodes(std::vector<T>& values) const {
+    nodes_.refresh(values);
+  }
+  void refreshPoints(PointStore& points) const { points_.refreshFields(points); }
+  void refreshNodes(NodeStore& nodes) const { nodes_.refreshFields(nodes); }
+
+  const parallel::Communicator& comm() const { return comm_; }
+  // Per point and per node held, 1 for a ghost.
+  std::span<const std::uint8_t> ghostPoints() const { return points_.ghostMask(); }
+  std::span<const std::uint8_t> ghostNodes() const { return nodes_.ghostMask(); }
+  // What sums and minima over the points count, and the ranks they run over.
+  Share pointShare() const { return {points_.ghostMask(), &comm_}; }
+  // The support radius the halos were last built for, m.
+  double support() const { return support_; }
+
+ private:
+  const parallel::Communicator& comm_;
+  parallel::Partition partition_;
+  parallel::Halo points_, nodes_;
+  double support_ = 0.0;
+};
+
+}  // namespace kessler::otm
