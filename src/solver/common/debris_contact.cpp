@@ -1,5 +1,7 @@
 #include "solver/common/debris_contact.hpp"
 
+#include "core/exact_sum.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -28,7 +30,7 @@ double stiffness(double h_a, double modulus_a, double h_b, double modulus_b) {
 
 }  // namespace
 
-void DebrisContact::apply(ParticleState& model, const Carriers& nodes, double dt_kick) {
+void DebrisContact::apply(ParticleState& model, const Carriers& nodes, double dt_kick, const Share& share) {
   PointStore& points = model.points;
   stored_ = 0.0;
   step_bound_ = std::numeric_limits<double>::infinity();
@@ -42,35 +44,44 @@ void DebrisContact::apply(ParticleState& model, const Carriers& nodes, double dt
     return points.debris(p) && passes != 0 && (passes & every_body) != every_body;
   };
   bool any = false;
-  for (LocalIndex p = 0; p < points.owned && !any; ++p) any = flying(p);
-  if (!any) return;
+  for (LocalIndex p = 0; p < points.owned && !any; ++p) any = share.own(p) && flying(p);
+  if (!share.any(any)) return;
+  auto total = [&](ExactSum& sum) { return share.comm ? share.comm->sum(sum) : sum.value(); };
+  auto ownNode = [&](LocalIndex a) { return nodes.ghost.empty() || nodes.ghost[static_cast<std::size_t>(a)] == 0; };
 
   if (body_spacing_.size() != bodies) {
-    // Each body's mean reference spacing and reference modulus: fixed for a run, found once.
+    // Each body's mean reference spacing and reference modulus, and its mass per node: fixed for a
+    // run (so a restarted run finds the same), found once, over every rank.
+    std::vector<ExactSum> spacing(bodies), mass(bodies);
+    std::vector<std::int64_t> count(2 * bodies, 0);  // each body's points, then its nodes
+    for (LocalIndex p = 0; p < points.owned; ++p) {
+      if (!share.own(p)) continue;
+      const auto b = static_cast<std::size_t>(points.body[p]);
+      spacing[b].add(points.spacing0[p]);
+      mass[b].add(points.mass[p]);
+      ++count[b];
+    }
+    for (LocalIndex a = 0; a < nodes.owned; ++a)
+      if (ownNode(a)) ++count[bodies + static_cast<std::size_t>(nodes.body[a])];
+    if (share.comm) share.comm->sum(count);
     body_spacing_.assign(bodies, 0.0);
     body_modulus_.assign(bodies, 0.0);
-    std::vector<double> count(bodies, 0.0);
-    for (LocalIndex p = 0; p < points.owned; ++p) {
-      body_spacing_[static_cast<std::size_t>(points.body[p])] += points.spacing0[p];
-      count[static_cast<std::size_t>(points.body[p])] += 1.0;
-    }
+    body_node_mass_.assign(bodies, 0.0);
     for (std::size_t b = 0; b < bodies; ++b) {
-      if (count[b] > 0.0) body_spacing_[b] /= count[b];
+      const double points_b = total(spacing[b]), mass_b = total(mass[b]);
+      if (count[b] > 0) body_spacing_[b] = points_b / static_cast<double>(count[b]);
+      if (count[bodies + b] > 0) body_node_mass_[b] = mass_b / static_cast<double>(count[bodies + b]);
       const Material& material = *model.materials[static_cast<std::size_t>(model.bodies[b].material)];
       const double c = material.referenceSoundSpeed();
       body_modulus_[b] = material.referenceDensity() * c * c;
     }
-    // And its mass per node (both constant, so a restarted run finds the same).
-    body_node_mass_.assign(bodies, 0.0);
-    count.assign(bodies, 0.0);
-    for (LocalIndex a = 0; a < nodes.owned; ++a) count[static_cast<std::size_t>(nodes.body[a])] += 1.0;
-    for (LocalIndex p = 0; p < points.owned; ++p)
-      body_node_mass_[static_cast<std::size_t>(points.body[p])] += points.mass[p];
-    for (std::size_t b = 0; b < bodies; ++b)
-      if (count[b] > 0.0) body_node_mass_[b] /= count[b];
   }
   const double largest = *std::max_element(body_spacing_.begin(), body_spacing_.end());
-  cells_.build(nodes.x, static_cast<LocalIndex>(nodes.x.size()), std::max(largest, 1e-300));
+  // Cells of one size on every rank: they order each debris point's pairs.
+  double cell = std::max(largest, 1e-300);
+  if (share.comm) cell = share.max(CellList::sizeFor(nodes.x, static_cast<LocalIndex>(nodes.x.size()), cell));
+  cells_.build(nodes.x, static_cast<LocalIndex>(nodes.x.size()), cell);
+  ExactSum stored;
   node_pairs_.resize(nodes.x.size(), 0);
   node_dv_.resize(nodes.x.size(), Vec3::Zero());
   node_stiffness_.resize(nodes.x.size(), 0.0);
@@ -117,7 +128,7 @@ void DebrisContact::apply(ParticleState& model, const Carriers& nodes, double dt
       pair.k = k;
       pair.m = m_d * nodes.mass[a] / (m_d + nodes.mass[a]);
       pair.c = 2.0 * damping_ratio * std::sqrt(k * pair.m);
-      stored_ += 0.5 * k * overlap * overlap;
+      if (share.own(d)) stored.add(0.5 * k * overlap * overlap);
       ++node_pairs_[static_cast<std::size_t>(a)];
       pairs_.push_back(pair);
     });
@@ -178,6 +189,7 @@ void DebrisContact::apply(ParticleState& model, const Carriers& nodes, double dt
     step_bound_ = std::min(step_bound_, std::sqrt(mass / node_stiffness_[a]));
     node_stiffness_[a] = 0.0;
   }
+  stored_ = total(stored);
 }
 
 }  // namespace kessler

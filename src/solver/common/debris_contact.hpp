@@ -14,8 +14,10 @@
 // wall behind is struck by the debris cloud.
 #include "search/cell_list.hpp"
 #include "solver/common/contact.hpp"
+#include "solver/common/own_sums.hpp"
 #include "solver/common/particle_state.hpp"
 
+#include <cstdint>
 #include <limits>
 #include <span>
 #include <vector>
@@ -28,8 +30,9 @@ struct Carriers {
   std::span<const Vec3> momentum;  // their velocity is momentum / mass
   std::span<const double> mass;
   std::span<const int> body;
-  std::span<Vec3> force;  // the contact forces are added to these
-  LocalIndex owned = 0;   // the first `owned` are this process's own
+  std::span<Vec3> force;                // the contact forces are added to these
+  LocalIndex owned = 0;                 // how many there are
+  std::span<const std::uint8_t> ghost;  // per carrier, 1 for a distributed run's ghost; empty: none
 };
 
 class DebrisContact {
@@ -37,7 +40,9 @@ class DebrisContact {
   // Adds the contact forces of this step's configuration to carriers.force (after the assembly)
   // and gives each debris point in contact its velocity change dt_kick f / m and its dissipation
   // as heat. dt_kick: the kick's interval of the step (the carriers' leapfrog).
-  void apply(ParticleState& state, const Carriers& carriers, double dt_kick);
+  // With `share` (a distributed run's own points and its ranks; collective), the bodies' constants,
+  // the search cells and the stored energy are those of the whole run.
+  void apply(ParticleState& state, const Carriers& carriers, double dt_kick, const Share& share = {});
 
   // The energy the contact springs store in the configuration apply() last saw, J.
   double storedEnergy() const { return stored_; }

@@ -14,9 +14,15 @@
 // of the debris, so the total energy is exact too. A point whose ball keeps nobody (the last of a
 // region released at once) takes the mean over the ball's earlier debris as well, and the
 // difference goes to those.
+//
+// The releases run one after another in id order, each ball's sums in id order, over a compact copy
+// of the points the balls hold. A distributed run gathers that copy from every rank, so every rank
+// computes the same releases in the same order as one process (docs/parallel.md).
 #include "search/cell_list.hpp"
+#include "solver/common/own_sums.hpp"
 #include "solver/common/particle_state.hpp"
 
+#include <cstdint>
 #include <vector>
 
 namespace kessler {
@@ -25,22 +31,34 @@ class DebrisRelease {
  public:
   // erosion_radius: the radius of the ball B_eps as a multiple of the point spacing.
   explicit DebrisRelease(double erosion_radius) : erosion_radius_(erosion_radius) {}
-  // Releases every failed point whose stress is zero (it bears no compression), serially in point
-  // order so that the result does not depend on the thread count. Returns the number released.
-  LocalIndex apply(ParticleState& model);
+  // Releases every failed point whose stress is zero (it bears no compression), in id order, so
+  // that the result depends neither on the thread count nor, with `share` (a distributed run's own
+  // points and ranks; collective), on the partition. Returns the number of own points released.
+  LocalIndex apply(ParticleState& model, const Share& share = {});
+
+  // One point of a ball, as the releases read and change it.
+  struct Member {
+    Index id = 0;
+    Vec3 x = Vec3::Zero(), v = Vec3::Zero();
+    double mass = 0.0, energy = 0.0;
+    double eps = 0.0;  // the ball radius of a releasing point
+    std::int32_t body = 0;
+    std::uint8_t releasing = 0, debris = 0;
+  };
 
  private:
-  // The points of the releasing bodies near the releasing points: those still in their body, and
-  // the earlier debris.
-  void collect(const PointStore& points);
-  void release(PointStore& points, LocalIndex p, double eps) const;
+  // The own points within the ball of a releasing point of their body (`releases`: every rank's
+  // releasing points, in id order); `local`: their indices.
+  void collect(const PointStore& points, const Share& share, const std::vector<Member>& releases,
+               std::vector<Member>& members, std::vector<LocalIndex>& local);
+  // The release of members_[k] (docs/theory.md §8), over members_ (in id order).
+  void release(std::size_t k);
 
   double erosion_radius_;
-  std::vector<std::uint8_t> releasing_;      // per point: released in this call
-  std::vector<std::uint8_t> body_releases_;  // per body: has a point released in this call
-  CellList body_cells_, debris_cells_;
-  std::vector<Vec3> body_x_, debris_x_;
-  std::vector<LocalIndex> body_points_, debris_;
+  std::vector<Member> members_;
+  CellList cells_;
+  std::vector<Vec3> x_;
+  std::vector<std::size_t> ball_;  // scratch: one ball's members, in id order
 };
 
 }  // namespace kessler

@@ -79,7 +79,7 @@ void Distribution::split(Model& model) {
 }
 
 void Distribution::rebuild(Model& model, std::vector<double>& volume_rate, double cutoff_per_spacing,
-                           double erosion_radius) {
+                           double erosion_radius, double contact_reach) {
   PointStore& points = model.points;
   NodeStore& nodes = model.nodes;
   if (volume_rate.size() != points.x.size()) volume_rate.assign(points.x.size(), 0.0);
@@ -99,12 +99,15 @@ void Distribution::rebuild(Model& model, std::vector<double>& volume_rate, doubl
   support_ = comm_.max(support);
   ball = comm_.max(ball);
   // Points: a rank's own nodes gather from every point whose support holds them (one radius), the
-  // volume averaging of its own points reads the points of their nodes' patches (two), and the
-  // erosion of an own point reads its ball.
-  // Nodes: those of the rows of every point held (two radii and one more), and those a search that
-  // widens a support (Neighbourhoods::retryPoints, at most 3.375 times) finds around an own point.
-  const std::vector<double> point_reach(static_cast<std::size_t>(points.owned), std::max(2.0 * support_, ball));
-  const std::vector<double> node_reach(static_cast<std::size_t>(nodes.owned), 3.5 * support_);
+  // volume averaging of its own points reads the points of their nodes' patches (two), the erosion
+  // of an own point reads its ball, and debris strikes an own node, or a node an own debris point
+  // strikes, whose share of the strike counts its other debris (two contact reaches).
+  // Nodes: those of the rows of every point held (two radii and one more), those a search that
+  // widens a support (Neighbourhoods::retryPoints, at most 3.375 times) finds around an own point,
+  // and those an own debris point may strike.
+  const std::vector<double> point_reach(static_cast<std::size_t>(points.owned),
+                                        std::max({2.0 * support_, ball, 2.0 * contact_reach}));
+  const std::vector<double> node_reach(static_cast<std::size_t>(nodes.owned), std::max(3.5 * support_, contact_reach));
   points_.build(travelling, partition_, point_reach, comm_);
   nodes_.build(nodes, partition_, node_reach, comm_);
   model.connectivity = Connectivity{};

@@ -30,10 +30,12 @@ class Distribution {
   void split(Model& model);
   // Drops the ghosts, moves each own point and node to the rank whose subdomain now holds it, and
   // fetches the ghosts for supports of `cutoff_per_spacing` times a point's spacing (its LME
-  // cut-off) and erosion balls of `erosion_radius` times it. `volume_rate` (per point; zeros if it
-  // has another size) travels with the points. Collective; the connectivity is stale afterwards
-  // (the search rebuilds it).
-  void rebuild(Model& model, std::vector<double>& volume_rate, double cutoff_per_spacing, double erosion_radius);
+  // cut-off), erosion balls of `erosion_radius` times it, and debris contacts reaching up to
+  // `contact_reach` (solver/common/debris_contact.hpp). `volume_rate` (per point; zeros if it has
+  // another size) travels with the points. Collective; the connectivity is stale afterwards (the
+  // search rebuilds it).
+  void rebuild(Model& model, std::vector<double>& volume_rate, double cutoff_per_spacing, double erosion_radius,
+               double contact_reach);
 
   // After a phase that got ghosts wrong: the owners' values of one array, or of every array of a store.
   template <class T>

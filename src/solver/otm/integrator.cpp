@@ -64,22 +64,34 @@ void Integrator::initialVolumeRates() {
 
 void Integrator::rebuildHalos() {
   if (!distribution_) return;
-  requireDistributable();
+  // What a debris contact may reach in the next step (solver/common/debris_contact.hpp): the two
+  // spacings of a pair and twice its flight over the kick, for a step up to twice this one.
+  const PointStore& points = model_.points;
+  const Share own = share();
+  double spacing = 0.0, speed = 0.0;
+  for (LocalIndex p = 0; p < points.owned; ++p) {
+    if (!own.own(p)) continue;
+    spacing = std::max(spacing, points.spacing0[p]);
+    if (points.debris(p)) speed = std::max(speed, points.v[p].norm());
+  }
+  contact_spacing_ = own.max(spacing);
+  contact_reach_ = 2.0 * contact_spacing_ + 2.0 * own.max(speed) * 2.0 * std::max(dt_last_, dt_next_);
   distribution_->rebuild(model_, volume_rate_, lme::cutoffRadius(settings_.lme_gamma, 1.0, settings_.lme_tolerance),
-                         settings_.erosion_radius);
+                         settings_.erosion_radius, contact_reach_);
   findBodyRanges();
 }
 
-void Integrator::requireDistributable() const {
+void Integrator::requireContactReach(double dt_kick) const {
   const PointStore& points = model_.points;
   const Share own = share();
-  bool broken = false;
-  for (LocalIndex p = 0; p < points.owned && !broken; ++p) broken = own.own(p) && points.broken[p] != 0;
-  if (own.any(broken))
-    throw Error(
-        fmt::format("t = {:.6g} s: material has failed, and a distributed run does not yet carry failed "
-                    "material (its release and debris; docs/parallel.md, \"The distributed step\")",
-                    time_));
+  double speed = 0.0;
+  for (LocalIndex p = 0; p < points.owned; ++p)
+    if (own.own(p) && points.debris(p)) speed = std::max(speed, points.v[p].norm());
+  if (own.any(2.0 * contact_spacing_ + 2.0 * speed * dt_kick > contact_reach_))
+    throw NumericalError(
+        fmt::format("debris flies further in a step than a distributed run's halo holds ({:.3g} m "
+                    "at {:.3g} m/s over {:.3g} s; docs/parallel.md, \"The distributed step\")",
+                    contact_reach_, own.max(speed), dt_kick));
 }
 
 template <class Fail>
@@ -124,8 +136,12 @@ void Integrator::advance(double dt) {
     // Debris that strikes a body pushes its nodes (solver/common/debris_contact.hpp).
     if (settings_.debris_contact) {
       NodeStore& nodes = model_.nodes;
-      contact_.apply(model_, Carriers{nodes.x, nodes.momentum, nodes.mass, nodes.body, nodes.force, nodes.owned},
-                     0.5 * (dt_last_ + dt));
+      const double dt_kick = 0.5 * (dt_last_ + dt);
+      if (distribution_) requireContactReach(dt_kick);
+      contact_.apply(model_,
+                     Carriers{nodes.x, nodes.momentum, nodes.mass, nodes.body, nodes.force, nodes.owned,
+                              distribution_ ? distribution_->ghostNodes() : std::span<const std::uint8_t>{}},
+                     dt_kick, share());
     }
   }
   {
@@ -151,8 +167,7 @@ void Integrator::advance(double dt) {
   {
     ScopedPhase phase(timers_, "erosion");
     eroded_ += erosion_.apply(model_, share());
-    if (distribution_) requireDistributable();
-    release_.apply(model_);
+    release_.apply(model_, share());
     if (settings_.debris_contact) markNewDebris(model_);
   }
   rebuildHalos();

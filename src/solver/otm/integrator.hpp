@@ -104,13 +104,15 @@ class Integrator {
   // (which throws); the others throw that another rank stopped the step. One process: fail() if failed_here.
   template <class Fail>
   void stopIfAny(bool failed_here, Fail&& fail) const;
-  // Stops a distributed run at what stage one of the distributed step does not yet do.
-  void requireDistributable() const;
+  // Stops a distributed run whose debris flies beyond the halo's contact reach in this kick.
+  void requireContactReach(double dt_kick) const;
   [[noreturn]] void failAtPoint(LocalIndex p, const std::string& what) const;
 
   Model& model_;
   Settings settings_;
   Distribution* distribution_ = nullptr;
+  double contact_spacing_ = 0.0;  // a distributed run: the largest reference spacing of a point, m
+  double contact_reach_ = 0.0;    // and the debris contact reach its halo holds (rebuildHalos), m
   Neighbourhoods neighbourhoods_;
   Eigenerosion erosion_;
   DebrisRelease release_;
