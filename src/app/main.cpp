@@ -1,26 +1,35 @@
 // The `kessler` command line: run, check, verify.
 #include "app/commands.hpp"
 #include "core/error.hpp"
+#include "core/log.hpp"
 #include "parallel/communicator.hpp"
 
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
 #include <exception>
+#include <string_view>
 
 int main(int argc, char** argv) {
   // MPI starts only under mpirun (parallel/communicator.hpp); a plain run never touches it.
   kessler::parallel::Session session(argc, argv);
   const kessler::parallel::Communicator& world = kessler::parallel::Communicator::world();
-  if (world.size() > 1) {
-    // The processes are up (docs/parallel.md), but no command steps a problem across them yet:
-    // refuse rather than run the same problem once per rank.
-    if (world.root())
-      fmt::print(stderr,
-                 "kessler: error: started on {} ranks, but this version runs a problem on one process only "
-                 "(distributed stepping is not built yet: docs/parallel.md); run it without mpirun\n",
-                 world.size());
-    return 1;
+  const bool distributed = world.size() > 1;
+  if (distributed) {
+    // Under mpirun the ranks run one problem together (docs/parallel.md): `run` alone does so yet.
+    const char* command = nullptr;
+    for (int i = 1; i < argc && !command; ++i)
+      if (argv[i][0] != '-') command = argv[i];
+    if (!command || std::string_view(command) != "run") {
+      if (world.root())
+        fmt::print(stderr,
+                   "kessler: error: started on {} ranks; only `kessler run` runs across ranks (docs/parallel.md), "
+                   "so run `{}` without mpirun\n",
+                   world.size(), command ? command : "kessler");
+      return 1;
+    }
+    // Rank 0 speaks for the run.
+    if (!world.root()) kessler::log::setLevel(kessler::log::Level::quiet);
   }
   CLI::App app{"Kessler: hypervelocity impact simulation with the Optimal Transportation Meshfree method"};
   app.require_subcommand(1);
@@ -29,12 +38,23 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
+  } catch (const kessler::NumericalError& e) {
+    // Every rank of a distributed run stops a failing step together: rank 0 reports it.
+    if (world.root()) fmt::print(stderr, "kessler: error: {}\n", e.what());
+    return 1;
   } catch (const kessler::Error& e) {
     // One handler at the top: a one-line message, non-zero exit, never a stack trace.
-    fmt::print(stderr, "kessler: error: {}\n", e.what());
-    return 1;
+    if (!distributed) {
+      fmt::print(stderr, "kessler: error: {}\n", e.what());
+      return 1;
+    }
+    // The other ranks may not have seen it, and would wait for this one: end them all.
+    fmt::print(stderr, "kessler: error (rank {}): {}\n", world.rank(), e.what());
+    world.abort(1);
   } catch (const std::exception& e) {
-    fmt::print(stderr, "kessler: internal error: {}\n", e.what());
+    fmt::print(stderr, "kessler: internal error{}: {}\n", distributed ? fmt::format(" (rank {})", world.rank()) : "",
+               e.what());
+    if (distributed) world.abort(2);
     return 2;
   }
   return kessler::app::exitCode();

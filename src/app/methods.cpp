@@ -23,8 +23,8 @@ Problem deckProblem(const io::RunConfig& config) {
   return problem;
 }
 
-std::unique_ptr<Method> buildMethod(const io::RunConfig& config) {
-  return makeMethod(deckProblem(config));
+std::unique_ptr<Method> buildMethod(const io::RunConfig& config, const parallel::Communicator* ranks) {
+  return makeMethod(deckProblem(config), ranks);
 }
 
 std::unique_ptr<Method> restoreMethod(const io::RunConfig& config, const std::filesystem::path& file,

@@ -3,6 +3,7 @@
 // (solver/common/problem.hpp) and the solver's factory (solver/methods.hpp) builds the method.
 #include "io/checkpoint.hpp"
 #include "io/config.hpp"
+#include "parallel/communicator.hpp"
 #include "solver/common/method.hpp"
 #include "solver/common/problem.hpp"
 
@@ -16,7 +17,8 @@ namespace kessler::app {
 Problem deckProblem(const io::RunConfig& config);
 
 // Meshes the deck's bodies and builds its method; not yet initialised (Method::initialise).
-std::unique_ptr<Method> buildMethod(const io::RunConfig& config);
+// With `ranks` of several processes (mpirun), each builds the whole model and keeps its part.
+std::unique_ptr<Method> buildMethod(const io::RunConfig& config, const parallel::Communicator* ranks = nullptr);
 
 // The method, ready to step, and the run loop's state from a checkpoint of a run of this deck
 // (io::writeCheckpoint).

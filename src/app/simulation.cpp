@@ -12,10 +12,12 @@
 #include "io/deck.hpp"
 #include "io/fields_writer.hpp"
 #include "io/summary.hpp"
+#include "parallel/communicator.hpp"
 #include "solver/common/method.hpp"
 
 #include <omp.h>
 
+#include <csignal>
 #include <memory>
 #include <optional>
 
@@ -42,6 +44,15 @@ class Run {
     record_.history.push_back({clock.steps, clock.time, clock.dt_last, method_->energies()});
   }
   void output();
+  // The whole run for output, analysis and checkpoints: the method itself on one process, or on
+  // rank 0 of a distributed run its gathered state (nullptr on the other ranks). Every rank must
+  // call it alike (docs/parallel.md).
+  const Method* whole() {
+    if (!method_->distributed()) return method_.get();
+    gathered_ = method_->gathered();
+    return gathered_.get();
+  }
+  bool root() const { return world_.root(); }
   bool checkpointDue() const;
   void checkpoint();
   void check() { method_->check(record_.history.front().energies.total()); }
@@ -52,20 +63,27 @@ class Run {
     record_.extra_timings["output"] = output_seconds_;
     record_.extra_timings["checkpoint"] = checkpoint_seconds_;
     record_.wall_seconds = previous_wall_seconds_ + wall_.seconds();
-    io::writeSummary(dir_ / "summary.json", record_, *method_);
+    const Method* run = whole();
+    if (root()) io::writeSummary(dir_ / "summary.json", record_, *run);
   }
   void printSummary() const;
   // The impact measurements into the summary (before finish() writes it) and the pictures after.
-  void analyse(const std::string& state) { record_.analysis = analyseImpact(config_, method_->state(), dir_, state); }
+  void analyse(const std::string& state) {
+    const Method* run = whole();
+    if (root()) record_.analysis = analyseImpact(config_, run->state(), dir_, state);
+  }
   void plots() const {
-    if (config_.analysis.enabled && config_.analysis.plots) drawPlots(dir_);
+    if (root() && config_.analysis.enabled && config_.analysis.plots) drawPlots(dir_);
   }
 
   const io::RunConfig& config_;
   RunOptions options_;
   std::filesystem::path dir_, checkpoint_file_;
   Stopwatch wall_, since_checkpoint_;
+  const parallel::Communicator& world_ = parallel::Communicator::world();
   std::unique_ptr<Method> method_;
+  std::unique_ptr<Method> gathered_;  // a distributed run's whole state, on rank 0 (whole())
+  long points_ = 0;                   // material points of the whole run
   std::unique_ptr<io::FieldWriter> writer_;
   io::RunRecord record_;
   double next_output_ = 0.0, next_checkpoint_ = 0.0;
@@ -81,24 +99,29 @@ RunOutcome Run::execute() {
         fmt::format("--restart {}: no checkpoint.h5 there (the run stopped before its first "
                     "checkpoint): start it again from its deck",
                     dir_.string()));
-  std::filesystem::create_directories(dir_);
-  io::writeResolvedDeck(config_, dir_ / "deck.resolved.yaml");
+  // Rank 0 writes the run folder; a distributed run's other ranks only compute.
+  if (root()) {
+    std::filesystem::create_directories(dir_);
+    io::writeResolvedDeck(config_, dir_ / "deck.resolved.yaml");
+  }
   record_.title = config_.title;
   record_.deck = config_.deck_path;
   record_.threads = omp_get_max_threads();
+  record_.ranks = world_.size();
   log::info("kessler: {} ({})", config_.title.empty() ? "untitled run" : config_.title, config_.deck_path);
-  writer_ = std::make_unique<io::FieldWriter>(dir_);
+  if (root()) writer_ = std::make_unique<io::FieldWriter>(dir_);
   if (options_.restart) resume();  // before the try: a bad checkpoint leaves the run folder alone
   std::optional<Progress> progress;
   try {
     if (!options_.restart) start();
-    progress.emplace(config_.solver.end_time, method_->state().points.owned, options_.progress);
+    progress.emplace(config_.solver.end_time, points_, options_.progress && root());
     while (!method_->finished()) {
       if (config_.solver.max_steps > 0 && steps() >= config_.solver.max_steps) {
         stop_ = Stop::max_steps;
         break;
       }
-      if (StopSignals::received() != 0) {
+      // mpirun passes a signal to every rank, not at the same step: they stop together.
+      if (world_.any(StopSignals::received() != 0)) {
         stop_ = Stop::signal;
         break;
       }
@@ -116,7 +139,7 @@ RunOutcome Run::execute() {
   if (checkpoint_step_ != steps()) checkpoint();
   const std::string restart_hint = fmt::format("kessler run --restart {}", dir_.string());
   if (stop_ == Stop::signal) {
-    const int signal = StopSignals::received();
+    const int signal = StopSignals::received() != 0 ? StopSignals::received() : SIGINT;
     record_.status = "interrupted";
     record_.message = fmt::format("stopped by {} at step {}, t = {:.6g} s; a checkpoint is in {}", signalName(signal),
                                   steps(), time(), checkpoint_file_.string());
@@ -145,10 +168,15 @@ RunOutcome Run::execute() {
 void Run::start() {
   Stopwatch meshing;
   log::info("meshing {} bodies", config_.bodies.size());
-  method_ = buildMethod(config_);
+  method_ = buildMethod(config_, &world_);
   record_.extra_timings["meshing"] = meshing.seconds();
-  log::info("model: {} material points, {} nodes; {} threads", method_->state().points.owned, method_->nodes().owned,
-            record_.threads);
+  // Every rank has built the whole model; initialise() splits it.
+  points_ = method_->state().points.owned;
+  if (world_.size() > 1)
+    log::info("model: {} material points, {} nodes; {} ranks of {} threads", points_, method_->nodes().owned,
+              world_.size(), record_.threads);
+  else
+    log::info("model: {} material points, {} nodes; {} threads", points_, method_->nodes().owned, record_.threads);
   method_->initialise();
   appendHistory();
   check();
@@ -162,6 +190,7 @@ void Run::resume() {
   Stopwatch restoring;
   io::RunLoopState loop;
   method_ = restoreMethod(config_, checkpoint_file_, loop);
+  points_ = method_->state().points.owned;
   record_.history = loop.history;
   record_.outputs = loop.outputs;
   KESSLER_VERIFY(!record_.history.empty(), "checkpoint '{}' holds no history", checkpoint_file_.string());
@@ -194,8 +223,11 @@ void Run::advance() {
 
 void Run::output() {
   Stopwatch watch;
-  writer_->write(steps(), time(), method_->nodes(), method_->state().points);
-  io::writeHistory(dir_ / "history.csv", record_.history);
+  const Method* run = whole();
+  if (root()) {
+    writer_->write(steps(), time(), run->nodes(), run->state().points);
+    io::writeHistory(dir_ / "history.csv", record_.history);
+  }
   ++record_.outputs;
   output_seconds_ += watch.seconds();
 }
@@ -211,10 +243,13 @@ void Run::checkpoint() {
   const double every = config_.checkpoint.every;
   if (every > 0.0)
     while (next_checkpoint_ <= time() * (1.0 + 1e-9)) next_checkpoint_ += every;
-  const io::RunLoopState loop{next_output_,        next_checkpoint_, previous_wall_seconds_ + wall_.seconds(),
-                              record_.outputs,     record_.history,  writer_->pointGrids(),
-                              writer_->nodeGrids()};
-  io::writeCheckpoint(checkpoint_file_, *method_, loop);
+  const Method* run = whole();
+  if (root()) {
+    const io::RunLoopState loop{next_output_,        next_checkpoint_, previous_wall_seconds_ + wall_.seconds(),
+                                record_.outputs,     record_.history,  writer_->pointGrids(),
+                                writer_->nodeGrids()};
+    io::writeCheckpoint(checkpoint_file_, *run, loop);
+  }
   checkpoint_step_ = steps();
   since_checkpoint_.restart();
   checkpoint_seconds_ += watch.seconds();
@@ -242,9 +277,10 @@ void Run::fail(const NumericalError& e) {
 }
 
 void Run::printSummary() const {
+  if (!root()) return;
   const Energies& e0 = record_.history.front().energies;
   const Energies& e1 = record_.history.back().energies;
-  const double point_steps = static_cast<double>(steps()) * method_->state().points.owned;
+  const double point_steps = static_cast<double>(steps()) * static_cast<double>(points_);
   log::info("{} steps to t = {:.4g} s in {:.1f} s wall ({:.3g} us per material-point step, {} threads)", steps(),
             time(), record_.wall_seconds, point_steps > 0 ? 1e6 * record_.wall_seconds / point_steps : 0.0,
             record_.threads);
@@ -252,7 +288,8 @@ void Run::printSummary() const {
             e1.kinetic, e0.internal, e1.internal, e0.total(), e1.total());
   log::info("momentum: ({:.6g}, {:.6g}, {:.6g}) -> ({:.6g}, {:.6g}, {:.6g}) kg m/s", e0.momentum[0], e0.momentum[1],
             e0.momentum[2], e1.momentum[0], e1.momentum[1], e1.momentum[2]);
-  for (const std::string& note : method_->notes()) log::info("{}", note);
+  // (A distributed run's notes are those of the whole run, gathered by finish().)
+  for (const std::string& note : (gathered_ ? gathered_ : method_)->notes()) log::info("{}", note);
   log::info("results in {}/ (points.xdmf and nodes.xdmf open in ParaView; summary.json, history.csv)", dir_.string());
 }
 

@@ -61,6 +61,7 @@ void writeSummary(const std::filesystem::path& file, const RunRecord& record, co
       {"status", record.status},
       {"problem", problem},
       {"threads", record.threads},
+      {"ranks", record.ranks},
       {"steps", clock.steps},
       {"simulated_time_s", clock.time},
       {"end_time_s", method.endTime()},

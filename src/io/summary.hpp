@@ -26,7 +26,8 @@ struct RunRecord {
   std::string deck;
   std::string status = "completed";  // completed | failed
   std::string message;               // the failure, if any
-  int threads = 1;
+  int threads = 1;                   // per rank
+  int ranks = 1;                     // processes (mpirun)
   double wall_seconds = 0.0;
   long outputs = 0;
   std::map<std::string, double> extra_timings;  // phases outside the integrator (meshing, output)

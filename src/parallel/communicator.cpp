@@ -161,6 +161,30 @@ std::vector<std::vector<std::byte>> Communicator::allGather(std::span<const std:
   return each;
 }
 
+std::vector<std::vector<std::byte>> Communicator::gather(std::span<const std::byte> mine) const {
+  if (!handle_) return {std::vector<std::byte>(mine.begin(), mine.end())};
+  std::vector<int> counts(static_cast<std::size_t>(size_)), offsets(counts.size());
+  const int own = count(mine.size());
+  check(MPI_Gather(&own, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm(handle_)), "gathering of sizes");
+  std::size_t total = 0;
+  for (int r = 0; r < size_; ++r) {
+    offsets[r] = count(total);
+    total += static_cast<std::size_t>(counts[r]);
+  }
+  std::vector<std::byte> all(std::max<std::size_t>(root() ? total : 0, 1));
+  check(MPI_Gatherv(mine.data(), own, MPI_BYTE, all.data(), counts.data(), offsets.data(), MPI_BYTE, 0, comm(handle_)),
+        "gathering to rank 0");
+  if (!root()) return {};
+  std::vector<std::vector<std::byte>> each(static_cast<std::size_t>(size_));
+  for (int r = 0; r < size_; ++r) each[r].assign(all.begin() + offsets[r], all.begin() + offsets[r] + counts[r]);
+  return each;
+}
+
+void Communicator::abort(int code) const {
+  if (handle_) MPI_Abort(comm(handle_), code);
+  std::exit(code);
+}
+
 #else  // one process: every collective is the identity
 
 Session::Session(int&, char**&) {}
@@ -187,6 +211,14 @@ void Communicator::exchangeWith(std::span<const int> to, const std::vector<std::
 
 std::vector<std::vector<std::byte>> Communicator::allGather(std::span<const std::byte> mine) const {
   return {std::vector<std::byte>(mine.begin(), mine.end())};
+}
+
+std::vector<std::vector<std::byte>> Communicator::gather(std::span<const std::byte> mine) const {
+  return {std::vector<std::byte>(mine.begin(), mine.end())};
+}
+
+void Communicator::abort(int code) const {
+  std::exit(code);
 }
 
 #endif

@@ -7,15 +7,9 @@
 
 namespace kessler {
 
-namespace {
-
-struct Bounds {
-  Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();
-};
-
 // The bounding box (min and max are exact, so the parallel reduction gives the same box for any
 // thread count).
-Bounds boundsOf(std::span<const Vec3> x, LocalIndex count) {
+CellList::Bounds CellList::boundsOf(std::span<const Vec3> x, LocalIndex count) {
   double lo0 = 0.0, lo1 = 0.0, lo2 = 0.0, hi0 = 0.0, hi1 = 0.0, hi2 = 0.0;
   if (count > 0) {
     lo0 = hi0 = x[0][0];
@@ -36,12 +30,12 @@ Bounds boundsOf(std::span<const Vec3> x, LocalIndex count) {
   return b;
 }
 
-// The cell size, at least `cell_size`, that keeps the grid at most ~4 cells per position: a few
-// far-flung fragments must not make the grid (and the memory) explode.
-double enlarged(const Bounds& b, LocalIndex count, double cell_size) {
+// At most ~4 cells per position: a few far-flung fragments must not make the grid (and the
+// memory) explode.
+double CellList::enlargedSize(const Bounds& b, std::int64_t count, double cell_size) {
   KESSLER_VERIFY(cell_size > 0.0 && std::isfinite(cell_size), "cell list: invalid cell size {}", cell_size);
   const Vec3 extent = (b.hi - b.lo).cwiseMax(Vec3::Constant(1e-300));
-  const double max_cells = 4.0 * std::max<double>(count, 1) + 64.0;
+  const double max_cells = 4.0 * std::max<double>(static_cast<double>(count), 1.0) + 64.0;
   auto cellCount = [&](double cell) {
     double n = 1.0;
     for (int d = 0; d < 3; ++d) n *= std::floor(extent[d] / cell) + 1.0;
@@ -52,16 +46,10 @@ double enlarged(const Bounds& b, LocalIndex count, double cell_size) {
   return cell;
 }
 
-}  // namespace
-
-double CellList::sizeFor(std::span<const Vec3> x, LocalIndex count, double cell_size) {
-  return enlarged(boundsOf(x, count), count, cell_size);
-}
-
 void CellList::build(std::span<const Vec3> x, LocalIndex count, double cell_size) {
   const Bounds bounds = boundsOf(x, count);
   const Vec3 &lo = bounds.lo, &hi = bounds.hi;
-  cell_ = enlarged(bounds, count, cell_size);
+  cell_ = enlargedSize(bounds, count, cell_size);
   // The cells lie on a lattice through the origin of space, not through this set's corner: the cell
   // a position falls in, and so the order in which a query visits positions, is then the same in
   // any set that holds it, given the cell size (a distributed run's ranks hold overlapping sets and

@@ -24,10 +24,14 @@ class CellList {
   // Bins positions [0, count) into cubic cells of edge `cell_size` (enlarged if the grid
   // would have far more cells than positions, e.g. for a sparse debris cloud).
   void build(std::span<const Vec3> x, LocalIndex count, double cell_size);
-  // The cell size build() would use: `cell_size`, enlarged where the positions spread so far that
-  // the grid would exceed a few cells per position. Sets that must search alike (a distributed run's
-  // ranks) build with the largest of theirs, which no set then enlarges.
-  static double sizeFor(std::span<const Vec3> x, LocalIndex count, double cell_size);
+  // The cell size build() uses: `cell_size`, enlarged where `count` positions within `bounds` spread
+  // so far that the grid would exceed a few cells per position. A distributed run's ranks find it
+  // from the whole run's bounds and count, and build with it (no rank's part is enlarged further).
+  struct Bounds {
+    Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();
+  };
+  static Bounds boundsOf(std::span<const Vec3> x, LocalIndex count);
+  static double enlargedSize(const Bounds& bounds, std::int64_t count, double cell_size);
 
   // Calls f(index, squared distance) for every binned position within `radius` of q.
   template <typename F>

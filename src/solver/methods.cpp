@@ -26,16 +26,17 @@ const std::vector<std::string>& methodNames() {
   return names;
 }
 
-std::unique_ptr<Method> makeMethod(const Problem& problem) {
+std::unique_ptr<Method> makeMethod(const Problem& problem, const parallel::Communicator* ranks) {
   requireKnown(problem);
-  return std::make_unique<otm::OtmMethod>(otm::buildModel(problem), problem);
+  return std::make_unique<otm::OtmMethod>(otm::buildModel(problem), problem, ranks);
 }
 
-std::unique_ptr<Method> makeMethod(const Problem& problem, ParticleState&& restored) {
+std::unique_ptr<Method> makeMethod(const Problem& problem, ParticleState&& restored,
+                                   const parallel::Communicator* ranks) {
   requireKnown(problem);
   otm::Model model;
   static_cast<ParticleState&>(model) = std::move(restored);
-  return std::make_unique<otm::OtmMethod>(std::move(model), problem);
+  return std::make_unique<otm::OtmMethod>(std::move(model), problem, ranks);
 }
 
 }  // namespace kessler

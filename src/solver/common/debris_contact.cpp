@@ -79,7 +79,11 @@ void DebrisContact::apply(ParticleState& model, const Carriers& nodes, double dt
   const double largest = *std::max_element(body_spacing_.begin(), body_spacing_.end());
   // Cells of one size on every rank: they order each debris point's pairs.
   double cell = std::max(largest, 1e-300);
-  if (share.comm) cell = share.max(CellList::sizeFor(nodes.x, static_cast<LocalIndex>(nodes.x.size()), cell));
+  if (share.comm) {
+    std::int64_t own = 0;
+    for (LocalIndex a = 0; a < nodes.owned; ++a) own += ownNode(a) ? 1 : 0;
+    cell = agreedCellSize(nodes.x, static_cast<LocalIndex>(nodes.x.size()), own, cell, share);
+  }
   cells_.build(nodes.x, static_cast<LocalIndex>(nodes.x.size()), cell);
   ExactSum stored;
   node_pairs_.resize(nodes.x.size(), 0);

@@ -49,7 +49,11 @@ LocalIndex Eigenerosion::apply(ParticleState& model, const Share& share) {
   });
   if (!(eps_sum[1] > 0.0)) return 0;
   double cell_size = eps_sum[0] / eps_sum[1];
-  if (share.comm) cell_size = share.max(CellList::sizeFor(candidate_x_, count, cell_size));
+  if (share.comm) {
+    std::int64_t own = 0;
+    for (const LocalIndex p : candidate_) own += share.own(p) ? 1 : 0;
+    cell_size = agreedCellSize(candidate_x_, count, own, cell_size, share);
+  }
   if (count == 0) return 0;
   cells_.build(candidate_x_, count, cell_size);
   // G_p is C_eps times a mass-weighted mean of W over the ball, so it cannot exceed C_eps times

@@ -11,6 +11,7 @@
 #include "solver/common/particle_state.hpp"
 #include "solver/common/state_archive.hpp"
 
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -69,6 +70,13 @@ class Method {
   // it (StateReader::fail).
   virtual void save(StateWriter& out) const = 0;
   virtual void load(const StateReader& in) = 0;
+
+  // A distributed run (docs/parallel.md): whether this rank holds a part of the run only, and the
+  // whole run as one process's method (collective): on rank 0 a method whose state, nodes, clock,
+  // energies and save() are the whole run's, for output, analysis and checkpoints; nullptr on the
+  // other ranks, and from a method that is whole already.
+  virtual bool distributed() const { return false; }
+  virtual std::unique_ptr<Method> gathered() const { return nullptr; }
 };
 
 }  // namespace kessler

@@ -5,8 +5,10 @@
 // any partition.
 #include "core/exact_sum.hpp"
 #include "parallel/communicator.hpp"
+#include "search/cell_list.hpp"
 
 #include <cstdint>
+#include <limits>
 #include <span>
 
 namespace kessler {
@@ -39,6 +41,22 @@ Eigen::Matrix<double, K, 1> ownSums(const Share& share, LocalIndex n, F&& term) 
 template <typename F>
 double ownSum(const Share& share, LocalIndex n, F&& term) {
   return ownSums<1>(share, n, [&](LocalIndex i) { return Eigen::Matrix<double, 1, 1>(term(i)); })[0];
+}
+
+// The cell size a cell list over a set of the whole run would take (CellList::build enlarges
+// `cell_size` by the set's extent and count): `x` holds this rank's positions of the set (own and
+// ghosts: all within the whole's bounds), `own` how many of them are its own.
+inline double agreedCellSize(std::span<const Vec3> x, LocalIndex count, std::int64_t own, double cell_size,
+                             const Share& share) {
+  if (!share.comm) return cell_size;
+  CellList::Bounds b = CellList::boundsOf(x, count);
+  if (count == 0) {
+    b.lo = Vec3::Constant(std::numeric_limits<double>::infinity());
+    b.hi = -b.lo;
+  }
+  share.comm->min(std::span<double>(b.lo.data(), 3));
+  share.comm->max(std::span<double>(b.hi.data(), 3));
+  return CellList::enlargedSize(b, share.comm->sum(own), cell_size);
 }
 
 }  // namespace kessler

@@ -1,5 +1,7 @@
 #include "solver/common/point_diagnostics.hpp"
 
+#include "solver/common/own_sums.hpp"
+
 #include "core/error.hpp"
 
 #include <fmt/format.h>
@@ -50,35 +52,26 @@ std::string describePoint(const ParticleState& state, const StepInfo& at, LocalI
 }
 
 void PointDiagnostics::check(const ParticleState& state, const StepInfo& at, double reference_energy,
-                             const StepLengthRule& rule, const std::function<bool()>& driven) {
-  checkPoints(state, at);
+                             const StepLengthRule& rule, const std::function<bool()>& driven, const Share& share) {
+  checkPoints(state, at, share);
   checkTimeStep(state, at, rule);
   checkEnergy(state, at, reference_energy, driven);
 }
 
-// One pass for the finiteness checks and the total energy: the lowest failing index and fixed
-// blocks summed in order, so that both are the same for any number of threads.
-void PointDiagnostics::checkPoints(const ParticleState& state, const StepInfo& at) {
+// The finiteness checks (the lowest failing index) and the total energy (an exact sum), the same
+// for any number of threads and, over own points, ranks.
+void PointDiagnostics::checkPoints(const ParticleState& state, const StepInfo& at, const Share& share) {
   const PointStore& s = state.points;
   const LocalIndex n = s.owned;
-  const LocalIndex blocks = (n + block - 1) / block;
-  block_energy_.resize(static_cast<std::size_t>(blocks));
   LocalIndex bad = n;
 #pragma omp parallel for schedule(static) reduction(min : bad)
-  for (LocalIndex b = 0; b < blocks; ++b) {
-    double sum = 0.0;
-    const LocalIndex end = std::min(n, (b + 1) * block);
-    for (LocalIndex p = b * block; p < end; ++p) {
-      if (!pointHealthy(s, p)) bad = std::min(bad, p);
-      // Internal energy by its size: under the compatible energy update a spurious source shows as
-      // kinetic energy gained and a point cooled below zero (docs/theory.md §4 step 5).
-      sum += s.mass[p] * (0.5 * s.v[p].squaredNorm() + std::abs(s.energy[p]));
-    }
-    block_energy_[static_cast<std::size_t>(b)] = sum;
-  }
+  for (LocalIndex p = 0; p < n; ++p)
+    if (share.own(p) && !pointHealthy(s, p)) bad = std::min(bad, p);
   if (bad < n) throw NumericalError(describePoint(state, at, bad, pointProblem(s, bad)));
-  energy_ = 0.0;
-  for (double e : block_energy_) energy_ += e;
+  // Internal energy by its size: under the compatible energy update a spurious source shows as
+  // kinetic energy gained and a point cooled below zero (docs/theory.md §4 step 5).
+  energy_ =
+      ownSum(share, n, [&](LocalIndex p) { return s.mass[p] * (0.5 * s.v[p].squaredNorm() + std::abs(s.energy[p])); });
 }
 
 void PointDiagnostics::checkTimeStep(const ParticleState& state, const StepInfo& at, const StepLengthRule& rule) const {

@@ -13,8 +13,8 @@
 //   step 812, t = 3.21e-06 s: material point 4711 of body 'plate' at (1, 2, 3) m: <quantity> = <value>
 //
 // The checks are O(N) passes with OpenMP reductions that give the same answer (the lowest failing
-// index, block sums in a fixed order) for any thread count, and allocate nothing after the first
-// call.
+// index, exact sums) for any thread count, and allocate nothing.
+#include "solver/common/own_sums.hpp"
 #include "solver/common/particle_state.hpp"
 #include "solver/common/settings.hpp"
 
@@ -46,20 +46,21 @@ class PointDiagnostics {
   // `reference_energy`: the total energy the run started with, J. The energy check is skipped when
   // it is not positive, or when driven() says a prescribed non-zero velocity does work that this
   // check does not account (asked only when the energy has grown beyond its limit).
+  // With `share` (a distributed run), the points checked and the energy summed are the rank's own,
+  // over every rank.
   void check(const ParticleState& state, const StepInfo& at, double reference_energy, const StepLengthRule& rule,
-             const std::function<bool()>& driven);
+             const std::function<bool()>& driven, const Share& share = {});
 
   // Total energy of the last check(), J.
   double lastEnergy() const { return energy_; }
 
  private:
-  void checkPoints(const ParticleState& state, const StepInfo& at);
+  void checkPoints(const ParticleState& state, const StepInfo& at, const Share& share);
   void checkTimeStep(const ParticleState& state, const StepInfo& at, const StepLengthRule& rule) const;
   void checkEnergy(const ParticleState& state, const StepInfo& at, double reference_energy,
                    const std::function<bool()>& driven) const;
 
   SolverSettings settings_;
-  std::vector<double> block_energy_;  // per fixed block of points, summed in order
   double energy_ = 0.0;
 };
 

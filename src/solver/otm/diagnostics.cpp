@@ -16,7 +16,7 @@ std::string describeNode(const Model& model, const StepInfo& at, LocalIndex a, c
                      body < model.bodies.size() ? model.bodies[body].name : "?", describeVector(s.x[a]), what);
 }
 
-void Diagnostics::check(const Model& model, const StepInfo& at, double reference_energy) {
+void Diagnostics::check(const Model& model, const StepInfo& at, double reference_energy, const Share& share) {
   const NodeStore& nodes = model.nodes;
   LocalIndex bad = nodes.owned;
 #pragma omp parallel for schedule(static) reduction(min : bad)
@@ -28,10 +28,11 @@ void Diagnostics::check(const Model& model, const StepInfo& at, double reference
                                  : fmt::format("non-finite position {}", describeVector(nodes.x[bad]));
     throw NumericalError(describeNode(model, at, bad, what));
   }
-  auto driven = [&] {  // a piston does work
-    for (LocalIndex a = 0; a < nodes.owned; ++a)
-      if (nodes.constrained[a] != 0 && nodes.prescribed_v[a].squaredNorm() > 0.0) return true;
-    return false;
+  auto driven = [&] {  // a piston does work (asked on every rank alike)
+    bool here = false;
+    for (LocalIndex a = 0; a < nodes.owned && !here; ++a)
+      here = nodes.constrained[a] != 0 && nodes.prescribed_v[a].squaredNorm() > 0.0;
+    return share.any(here);
   };
   const StepLengthRule rule{
       [&](LocalIndex p) { return stepLength(model, p); },
@@ -41,7 +42,7 @@ void Diagnostics::check(const Model& model, const StepInfo& at, double reference
             "half its spacing, from its support's spread",
             smallestStretch(model.points.F[p]));
       }};
-  points_.check(model, at, reference_energy, rule, driven);
+  points_.check(model, at, reference_energy, rule, driven, share);
 }
 
 }  // namespace kessler::otm

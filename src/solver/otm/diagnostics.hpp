@@ -18,7 +18,8 @@ class Diagnostics {
   // `reference_energy`: the total energy the run started with, J. The energy check is skipped
   // when it is not positive, or when a node has a non-zero prescribed velocity (a piston does
   // work that this check does not account).
-  void check(const Model& model, const StepInfo& at, double reference_energy);
+  // With `share` (a distributed run): the points its own, sums and `driven` over every rank.
+  void check(const Model& model, const StepInfo& at, double reference_energy, const Share& share = {});
 
   // Total energy of the last check(), J.
   double lastEnergy() const { return points_.lastEnergy(); }

@@ -16,6 +16,7 @@
 #include "solver/otm/model.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -29,13 +30,25 @@ class Distribution {
   // weighted by one), and the points and nodes in this rank's subdomain. No ghosts yet (rebuild).
   void split(Model& model);
   // Drops the ghosts, moves each own point and node to the rank whose subdomain now holds it, and
-  // fetches the ghosts for supports of `cutoff_per_spacing` times a point's spacing (its LME
-  // cut-off), erosion balls of `erosion_radius` times it, and debris contacts reaching up to
-  // `contact_reach` (solver/common/debris_contact.hpp). `volume_rate` (per point; zeros if it has
+  // fetches the ghosts for searches of radius up to `support` (a point's row holds the nodes within
+  // its search), erosion balls of `erosion_radius` times a point's spacing, and debris contacts
+  // reaching up to `contact_reach` (solver/common/debris_contact.hpp). `volume_rate` (per point; zeros if it has
   // another size) travels with the points. Collective; the connectivity is stale afterwards (the
   // search rebuilds it).
-  void rebuild(Model& model, std::vector<double>& volume_rate, double cutoff_per_spacing, double erosion_radius,
+  void rebuild(Model& model, std::vector<double>& volume_rate, double support, double erosion_radius,
                double contact_reach);
+
+  // The whole run as one process holds it, on rank 0 (nullopt elsewhere): every rank's own points
+  // and nodes in id order, their connectivity and LME multipliers, and the shared bodies,
+  // materials and links. What output, analysis and checkpoints read. Collective.
+  std::optional<Model> gather(const Model& model) const;
+
+  // The largest rank's own points over the mean, at the last rebuild; and the largest so far.
+  double imbalance() const { return imbalance_; }
+  double largestImbalance() const { return largest_imbalance_; }
+  // How many times the points were cut afresh because the imbalance passed `rebalance_at`.
+  int rebalances() const { return rebalances_; }
+  static constexpr double rebalance_at = 1.1;
 
   // After a phase that got ghosts wrong: the owners' values of one array, or of every array of a store.
   template <class T>
@@ -55,6 +68,7 @@ class Distribution {
   std::span<const std::uint8_t> ghostNodes() const { return nodes_.ghostMask(); }
   // What sums and minima over the points count, and the ranks they run over.
   Share pointShare() const { return {points_.ghostMask(), &comm_}; }
+  Share nodeShare() const { return {nodes_.ghostMask(), &comm_}; }
   // The support radius the halos were last built for, m.
   double support() const { return support_; }
 
@@ -63,6 +77,8 @@ class Distribution {
   parallel::Partition partition_;
   parallel::Halo points_, nodes_;
   double support_ = 0.0;
+  double imbalance_ = 1.0, largest_imbalance_ = 1.0;
+  int rebalances_ = 0;
 };
 
 }  // namespace kessler::otm

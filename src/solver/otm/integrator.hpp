@@ -96,8 +96,10 @@ class Integrator {
   void heatPoints(const std::vector<double>& heat);
   double stableStep() const;
   void findBodyRanges();
-  // A distributed run: the halos fetched afresh, before the search (Distribution::rebuild).
-  void rebuildHalos();
+  // The neighbourhoods and shape functions (Neighbourhoods::update); a distributed run fetches its
+  // halos first, for searches up to `support`, and again wider while a search reaches beyond them.
+  void search();
+  void rebuildHalos(double support);
   // What sums and minima over points count: all (one process) or this rank's own, over every rank.
   Share share() const { return distribution_ ? distribution_->pointShare() : Share{}; }
   // Stops every rank of a distributed run when `failed_here` is true on any: this rank calls fail()

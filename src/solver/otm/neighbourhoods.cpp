@@ -113,9 +113,9 @@ int Neighbourhoods::gather(const Model& model, LocalIndex p, double scale, bool 
       }
     }
     if (static_cast<int>(s.visible) >= settings_.min_neighbours || attempt == 12) break;
-    if (attempt == 0) s.widened.push_back(p);
     radius *= 1.25;
   }
+  s.radius = radius;
   return static_cast<int>(s.node.size());
 }
 
@@ -139,13 +139,14 @@ lme::Result Neighbourhoods::shapeFunctionsAt(Model& model, LocalIndex p, std::sp
 // best-conditioned of its attempts, the first included, and the run stops only if none converged.
 // Rare, so the connectivity is then rebuilt with the retried rows (not at all when every retried
 // point keeps its first row).
-void Neighbourhoods::retryPoints(Model& model, const Share& share) {
+Neighbourhoods::Pending Neighbourhoods::retryPoints(Model& model, const Share& share) {
   PointStore& points = model.points;
   Connectivity& conn = model.connectivity;
   const LocalIndex np = points.owned;
+  Pending pending;
   std::vector<std::pair<LocalIndex, double>> retry;
   for (const Scratch& s : scratch_) retry.insert(retry.end(), s.retry.begin(), s.retry.end());
-  if (retry.empty()) return;
+  if (retry.empty()) return pending;
   std::sort(retry.begin(), retry.end());  // in point order, as the rows
 
   Scratch& s = scratch_.front();
@@ -154,8 +155,6 @@ void Neighbourhoods::retryPoints(Model& model, const Share& share) {
   s.rows.clear();
   std::vector<std::size_t> start(retry.size() + 1, 0);
   std::vector<char> kept(retry.size(), 0);  // the point keeps the row of its first attempt
-  LocalIndex failed = np;
-  lme::Result failure;
   for (std::size_t k = 0; k < retry.size(); ++k) {
     // Plain names, not a structured binding: the lambda below captures them (C++20 allows it, clang 14
     // does not).
@@ -163,8 +162,10 @@ void Neighbourhoods::retryPoints(Model& model, const Share& share) {
     const double first_covariance = retry[k].second;
     lme::Result r;
     int n = 0;
+    double radius = radius_[p];
     auto attempt = [&](int i) {
       n = gather(model, p, std::pow(1.5, i), false, s);
+      radius = s.radius;
       const auto size = static_cast<std::size_t>(n);
       s.N.resize(start[k] + size);
       s.dN.resize(start[k] + size);
@@ -187,24 +188,17 @@ void Neighbourhoods::retryPoints(Model& model, const Share& share) {
     }
     // An intact point outside the hull of every neighbourhood tried (the nodes around it have moved
     // more than three supports away) has torn from its body: it fails and leaves with the failed.
+    // (Its state changes once the search is kept: apply().)
     const bool torn = !points.failed(p) && best_attempt < 0 &&
                       (r.status == lme::Status::outside_hull || r.status == lme::Status::no_nodes) &&
                       points.x[p].allFinite();
-    if (torn) {
-      points.fail(p);
-      if (share.own(p)) {
-        ++torn_;
-        torn_mass_ += points.mass[p];
-      }
-    }
-    if (r.status != lme::Status::converged && points.failed(p)) {
+    if (torn) pending.torn.push_back(p);
+    if (r.status != lme::Status::converged && (points.failed(p) || torn)) {
       // Failed material outside the hull of every neighbourhood (or at its very edge) is leaving
       // its body: released to fly on (a zero row), with the velocity it has.
       std::fill(s.N.begin() + static_cast<std::ptrdiff_t>(start[k]), s.N.end(), 0.0);
       std::fill(s.dN.begin() + static_cast<std::ptrdiff_t>(start[k]), s.dN.end(), Vec3::Zero());
-      points.carrier[p] = -1;
-      points.stress[p].setZero();
-      points.viscous_pressure[p] = 0.0;
+      pending.released.push_back(p);
     } else if (r.status != lme::Status::converged && best_attempt == 0) {
       kept[k] = 1;  // intact, and no retry is better conditioned than the first attempt
       s.N.resize(start[k]);
@@ -213,26 +207,18 @@ void Neighbourhoods::retryPoints(Model& model, const Share& share) {
       continue;
     } else if (r.status != lme::Status::converged && best_attempt > 0) {
       if (best_attempt != 3) attempt(best_attempt);  // intact: the best-conditioned retry
-    } else if (r.status != lme::Status::converged && failed == np && share.own(p)) {
-      failed = p;
-      failure = r;
+    } else if (r.status != lme::Status::converged && pending.failed < 0 && share.own(p)) {
+      pending.failed = p;
+      pending.failure = r;
       // A point whose own position is not finite finds no nodes: say what is wrong with it.
-      if (!points.x[p].allFinite()) failure.status = lme::Status::not_finite;
+      if (!points.x[p].allFinite()) pending.failure.status = lme::Status::not_finite;
     }
-    if (share.own(p)) widened_ += 1;
+    radius_[p] = radius;
     s.rows.insert(s.rows.end(), s.node.begin(), s.node.begin() + n);
     start[k + 1] = start[k] + static_cast<std::size_t>(n);
     count_[p] = n;
   }
-  if (failed < np) {
-    const Vec3& x = points.x[failed];
-    throw NumericalError(
-        fmt::format("LME shape functions failed at material point {} of body '{}' at ({:.6g}, {:.6g}, {:.6g}) m: {} "
-                    "({} nodes, residual {:.3g} h after {} iterations)",
-                    points.id[failed], model.bodies[points.body[failed]].name, x[0], x[1], x[2],
-                    lme::describe(failure.status), count_[failed], failure.residual, failure.iterations));
-  }
-  if (std::all_of(kept.begin(), kept.end(), [](char c) { return c != 0; })) return;
+  if (std::all_of(kept.begin(), kept.end(), [](char c) { return c != 0; })) return pending;
   // New rows in point order: the old rows of the points that converged or kept theirs, the retried ones.
   Connectivity rebuilt;
   rebuilt.offset.assign(static_cast<std::size_t>(np) + 1, 0);
@@ -261,9 +247,10 @@ void Neighbourhoods::retryPoints(Model& model, const Share& share) {
   conn.node = std::move(rebuilt.node);
   conn.N = std::move(rebuilt.N);
   conn.dN = std::move(rebuilt.dN);
+  return pending;
 }
 
-void Neighbourhoods::update(Model& model, const Share& share) {
+bool Neighbourhoods::update(Model& model, const Share& share, const Share& node_share, double halo_radius) {
   NodeStore& nodes = model.nodes;
   PointStore& points = model.points;
   Connectivity& conn = model.connectivity;
@@ -277,6 +264,8 @@ void Neighbourhoods::update(Model& model, const Share& share) {
   const std::size_t bodies = model.bodies.size();
   cutoff_per_spacing_ = lme::cutoffRadius(settings_.lme_gamma, 1.0, settings_.lme_tolerance);
   spacing_.resize(static_cast<std::size_t>(np));
+  radius_.assign(static_cast<std::size_t>(np), 0.0);
+  if (share.comm) lambda_before_ = model.lme_lambda;
 #pragma omp parallel for schedule(static)
   for (LocalIndex p = 0; p < np; ++p) spacing_[p] = points.spacing(p);
   const Eigen::Vector2d sum = ownSums<2>(share, np, [&](LocalIndex p) {
@@ -287,7 +276,11 @@ void Neighbourhoods::update(Model& model, const Share& share) {
   const double cell_size =
       intact > 0 ? lme::cutoffRadius(settings_.lme_gamma, spacing_sum / intact, settings_.lme_tolerance) : 1.0;
   double node_cell = std::max(cell_size, 1e-300);
-  if (share.comm) node_cell = share.max(CellList::sizeFor(nodes.x, nodes.size(), node_cell));
+  if (share.comm) {
+    std::int64_t own = 0;
+    for (LocalIndex a = 0; a < nodes.size(); ++a) own += node_share.own(a) ? 1 : 0;
+    node_cell = agreedCellSize(nodes.x, nodes.size(), own, node_cell, share);
+  }
   cells_.build(nodes.x, nodes.size(), node_cell);
   if (settings_.crack_visibility) buildOccluders(model, cell_size);
 
@@ -311,7 +304,6 @@ void Neighbourhoods::update(Model& model, const Share& share) {
     Scratch& s = scratch_[static_cast<std::size_t>(t)];
     s.contact.reset(bodies);
     s.retry.clear();
-    s.widened.clear();
     // Chunks of points, dynamically scheduled (points near cracks cost more: the visibility
     // test); a chunk's node lists go to the searching thread's rows, in point order, and the
     // chunk remembers which thread and where.
@@ -329,6 +321,7 @@ void Neighbourhoods::update(Model& model, const Share& share) {
         } else {
           count_[p] = gather(model, p, 1.0, settings_.crack_visibility, s);
           visible_[p] = static_cast<int>(s.visible);
+          radius_[p] = s.radius;
         }
         s.rows.insert(s.rows.end(), s.node.begin(), s.node.end());
       }
@@ -374,10 +367,20 @@ void Neighbourhoods::update(Model& model, const Share& share) {
 #pragma omp critical
     shape_time = std::max(shape_time, my_shape_time);
   }
-  widened_ = 0;
-  for (const Scratch& s : scratch_)
-    for (const LocalIndex p : s.widened) widened_ += share.own(p) ? 1 : 0;
-  retryPoints(model, share);
+  const Pending pending = retryPoints(model, share);
+  // A distributed run's halo holds what searches up to `halo_radius` around its points need: a
+  // search that went further anywhere is done again, from the same state, with a wider halo.
+  if (share.comm) {
+    double largest = 0.0;
+    for (LocalIndex p = 0; p < np; ++p)
+      if (share.own(p) && !points.debris(p)) largest = std::max(largest, radius_[p]);
+    largest_radius_ = share.max(largest);
+    if (largest_radius_ > halo_radius) {
+      model.lme_lambda = lambda_before_;
+      return false;
+    }
+  }
+  apply(model, share, pending);
   std::vector<std::uint64_t> touching(bodies, 0);
   for (const Scratch& s : scratch_) s.contact.addTouching(touching);
   recordContacts(model, touching);
@@ -386,6 +389,35 @@ void Neighbourhoods::update(Model& model, const Share& share) {
   const double total = watch.seconds();
   shape_seconds_ = shape_time;
   search_seconds_ = total - shape_time;
+  return true;
+}
+
+void Neighbourhoods::apply(Model& model, const Share& share, const Pending& pending) {
+  PointStore& points = model.points;
+  for (const LocalIndex p : pending.torn) {
+    points.fail(p);
+    if (share.own(p)) {
+      ++torn_;
+      torn_mass_ += points.mass[p];
+    }
+  }
+  for (const LocalIndex p : pending.released) {
+    points.carrier[p] = -1;
+    points.stress[p].setZero();
+    points.viscous_pressure[p] = 0.0;
+  }
+  const bool failed_here = pending.failed >= 0;
+  const bool anywhere = share.any(failed_here);
+  if (failed_here) {
+    const LocalIndex failed = pending.failed;
+    const Vec3& x = points.x[failed];
+    throw NumericalError(fmt::format(
+        "LME shape functions failed at material point {} of body '{}' at ({:.6g}, {:.6g}, {:.6g}) m: {} "
+        "({} nodes, residual {:.3g} h after {} iterations)",
+        points.id[failed], model.bodies[points.body[failed]].name, x[0], x[1], x[2],
+        lme::describe(pending.failure.status), count_[failed], pending.failure.residual, pending.failure.iterations));
+  }
+  if (anywhere) throw NumericalError("another rank's shape functions failed (its message says where)");
 }
 
 }  // namespace kessler::otm

@@ -21,9 +21,11 @@ class Neighbourhoods {
 
   // Rebuilds the connectivity of all points held. Throws NumericalError naming the point if
   // its shape functions cannot be built (outside the convex hull of its nodes, no nodes). In a
-  // distributed run (`share`: the rank's own points and the ranks), the cell sizes are agreed by all
-  // ranks, only own points count and throw, and the bodies' contact records join every rank's.
-  void update(Model& model, const Share& share = {});
+  // distributed run (`share`, `node_share`: the rank's own points and nodes, and the ranks; collective), the cell sizes
+  // are agreed by all ranks, only own points count and throw, and the bodies' contact records join every rank's; if any
+  // own point's search went beyond `halo_radius` (what the halo holds), the model is left as it was (the multipliers
+  // restored, no point torn) and it returns false: search again with a halo of at least largestRadius().
+  bool update(Model& model, const Share& share = {}, const Share& node_share = {}, double halo_radius = 0.0);
 
   // Time spent in the search and in the shape functions during the last update.
   double searchSeconds() const { return search_seconds_; }
@@ -31,9 +33,9 @@ class Neighbourhoods {
   // Intact points released so far because they lay outside the hull of every neighbourhood tried
   // (torn from their body; retryPoints), and their mass.
   LocalIndex tornPoints() const { return torn_; }
-  // Own points of the last update whose search went beyond their cut-off radius (too few nodes
-  // within it, or a retry): a distributed run's halo may not hold what such a search needs.
-  LocalIndex widenedPoints() const { return widened_; }
+  // A distributed run: the largest radius any point's search reached in the last update (its cut-off
+  // radius, widened where it found too few nodes or its shape functions failed), over every rank.
+  double largestRadius() const { return largest_radius_; }
   double tornMass() const { return torn_mass_; }
 
  private:
@@ -47,7 +49,7 @@ class Neighbourhoods {
     std::vector<double> N;  // shape functions of retried points
     std::vector<Vec3> dN;
     SeizingProbe contact;
-    std::vector<LocalIndex> widened;  // points whose search went beyond their cut-off radius
+    double radius = 0.0;  // how far the last gather() searched
     std::vector<Vec3> offsets;
     std::vector<Vec3> occluders;  // eroded points near the point being processed
   };
@@ -72,7 +74,17 @@ class Neighbourhoods {
   // Retries the points whose shape functions failed or are ill-conditioned with larger radii and
   // smoother supports; an intact point outside the hull of every attempt is torn (fails and is
   // released); throws if an intact point's shape functions still fail otherwise.
-  void retryPoints(Model& model, const Share& share);
+  // What the retries change in the points once the search is kept (apply()), and the first own
+  // point whose shape functions failed.
+  struct Pending {
+    std::vector<LocalIndex> torn;      // intact points torn from their body
+    std::vector<LocalIndex> released;  // failed points leaving their body (zero rows)
+    LocalIndex failed = -1;
+    lme::Result failure;
+  };
+  Pending retryPoints(Model& model, const Share& share);
+  // Applies the retries' changes, and throws on every rank if an own point's shape functions failed.
+  void apply(Model& model, const Share& share, const Pending& pending);
 
   Settings settings_;
   CellList cells_;
@@ -89,7 +101,9 @@ class Neighbourhoods {
   double cutoff_per_spacing_ = 0.0;  // the LME cut-off radius over h (a logarithm and a root)
   double search_seconds_ = 0.0, shape_seconds_ = 0.0;
   LocalIndex torn_ = 0;
-  LocalIndex widened_ = 0;
+  std::vector<double> radius_;       // per point: how far its search reached
+  double largest_radius_ = 0.0;      // over every rank's own points (a distributed run)
+  std::vector<Vec3> lambda_before_;  // a distributed run: the multipliers before the search
   double torn_mass_ = 0.0;
 };
 

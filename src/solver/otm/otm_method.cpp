@@ -8,8 +8,22 @@
 
 namespace kessler::otm {
 
-OtmMethod::OtmMethod(Model model, const Problem& problem)
-    : OtmMethod(std::move(model), settingsFor(problem.settings, problem.walls)) {
+namespace {
+
+std::unique_ptr<Distribution> distributionFor(const parallel::Communicator* ranks) {
+  return ranks && ranks->size() > 1 ? std::make_unique<Distribution>(*ranks) : nullptr;
+}
+
+}  // namespace
+
+OtmMethod::OtmMethod(Model model, const Settings& settings, const parallel::Communicator* ranks)
+    : model_(std::move(model)),
+      distribution_(distributionFor(ranks)),
+      integrator_(model_, settings, distribution_.get()),
+      diagnostics_(settings) {}
+
+OtmMethod::OtmMethod(Model model, const Problem& problem, const parallel::Communicator* ranks)
+    : OtmMethod(std::move(model), settingsFor(problem.settings, problem.walls), ranks) {
   for (const PlaneConstraint& plane : problem.planes) {
     if (!plane.history) continue;
     History h{plane.axis, plane.history, {}, {}};
@@ -26,8 +40,9 @@ void OtmMethod::locateHistories() {
     h.nodes.clear();
     for (const Index id : h.node_ids) {
       const LocalIndex a = index.find(id);
-      KESSLER_VERIFY(a >= 0, "prescribed velocity history: node {} is not in the store", id);
-      h.nodes.push_back(a);
+      // A distributed run's rank holds some of the plane's nodes.
+      KESSLER_VERIFY(a >= 0 || distribution_, "prescribed velocity history: node {} is not in the store", id);
+      if (a >= 0) h.nodes.push_back(a);
     }
   }
 }
@@ -38,7 +53,9 @@ void OtmMethod::initialise() {
 }
 
 void OtmMethod::step() {
-  // The histories at the middle of the step.
+  // The histories at the middle of the step (a distributed run's nodes move between ranks and
+  // places every step).
+  if (distribution_) locateHistories();
   for (const History& h : histories_) {
     const double v = h.velocity(integrator_.time() + 0.5 * integrator_.nextStep());
     for (const LocalIndex a : h.nodes) model_.nodes.prescribed_v[a][h.axis] = v;
@@ -56,7 +73,20 @@ double OtmMethod::addedPressure(LocalIndex p) const {
 
 void OtmMethod::check(double initial_total_energy) {
   const StepInfo at{integrator_.steps(), integrator_.time(), integrator_.nextStep(), integrator_.initialStep()};
-  diagnostics_.check(model_, at, initial_total_energy);
+  if (!distribution_) {
+    diagnostics_.check(model_, at, initial_total_energy);
+    return;
+  }
+  // Every rank stops if one does (the others would wait for it).
+  std::optional<NumericalError> failure;
+  try {
+    diagnostics_.check(model_, at, initial_total_energy, distribution_->pointShare());
+  } catch (const NumericalError& e) {
+    failure = e;
+  }
+  const bool anywhere = distribution_->comm().any(failure.has_value());
+  if (failure) throw *failure;
+  if (anywhere) throw NumericalError(fmt::format("{}: another rank's health check failed", describeStep(at)));
 }
 
 Clock OtmMethod::clock() const {
@@ -66,15 +96,46 @@ Clock OtmMethod::clock() const {
 
 std::vector<std::pair<std::string, double>> OtmMethod::sizes() const {
   const double points = model_.points.owned;
-  return {{"mean_neighbours", points > 0 ? static_cast<double>(model_.connectivity.node.size()) / points : 0.0}};
+  std::vector<std::pair<std::string, double>> sizes{
+      {"mean_neighbours", points > 0 ? static_cast<double>(model_.connectivity.node.size()) / points : 0.0}};
+  if (report_) sizes.insert(sizes.end(), report_->sizes.begin(), report_->sizes.end());
+  return sizes;
+}
+
+// The ranks and their balance (docs/parallel.md).
+std::vector<std::pair<std::string, double>> OtmMethod::rankSizes() const {
+  if (!distribution_) return {};
+  return {{"ranks", distribution_->comm().size()},
+          {"imbalance", distribution_->imbalance()},
+          {"largest_imbalance", distribution_->largestImbalance()},
+          {"rebalances", distribution_->rebalances()}};
 }
 
 std::vector<std::string> OtmMethod::notes() const {
-  if (integrator_.tornPoints() == 0) return {};
+  return report_ ? report_->notes : tornNotes(integrator_.tornPoints(), integrator_.tornMass());
+}
+
+std::vector<std::string> OtmMethod::tornNotes(LocalIndex torn, double mass) const {
+  if (torn == 0) return {};
   return {
       fmt::format("torn from their bodies: {} intact point(s), {:.3g} g, outside the hull of every neighbourhood of "
                   "their nodes, released as debris (docs/theory.md §8)",
-                  integrator_.tornPoints(), 1e3 * integrator_.tornMass())};
+                  torn, 1e3 * mass)};
+}
+
+std::unique_ptr<Method> OtmMethod::gathered() const {
+  if (!distribution_) return nullptr;
+  const parallel::Communicator& comm = distribution_->comm();
+  const std::int64_t torn = comm.sum(static_cast<std::int64_t>(integrator_.tornPoints()));
+  ExactSum torn_mass;
+  torn_mass.add(integrator_.tornMass());
+  const double mass = comm.sum(torn_mass);
+  std::optional<Model> whole = distribution_->gather(model_);
+  if (!whole) return nullptr;
+  auto method = std::make_unique<OtmMethod>(std::move(*whole), integrator_.settings());
+  method->integrator_.restore(integrator_.state());
+  method->report_ = Report{integrator_.timers(), rankSizes(), tornNotes(static_cast<LocalIndex>(torn), mass)};
+  return method;
 }
 
 // The names are those of the checkpoint format 5, so that its files and those of format 6 read alike.
@@ -109,6 +170,8 @@ void OtmMethod::save(StateWriter& out) const {
 }
 
 void OtmMethod::load(const StateReader& in) {
+  if (distribution_)
+    in.fail("restart on several ranks: a distributed run does not yet restart (docs/parallel.md); run it on one");
   NodeStore& nodes = model_.nodes;
   const std::size_t nn = in.length("/nodes/x");
   NodeStore::fields(nodes, [&](const char* name, auto& values, const auto&) {

@@ -3,18 +3,23 @@
 #include "solver/common/method.hpp"
 #include "solver/common/problem.hpp"
 #include "solver/otm/diagnostics.hpp"
+#include "solver/otm/distribution.hpp"
 #include "solver/otm/integrator.hpp"
 #include "solver/otm/model.hpp"
 #include "solver/otm/settings.hpp"
+
+#include <memory>
+#include <optional>
 
 namespace kessler::otm {
 
 class OtmMethod final : public Method {
  public:
-  OtmMethod(Model model, const Settings& settings)
-      : model_(std::move(model)), integrator_(model_, settings), diagnostics_(settings) {}
+  // With `ranks` of more than one process, this rank runs its part of the model (which every rank
+  // built alike; docs/parallel.md).
+  OtmMethod(Model model, const Settings& settings, const parallel::Communicator* ranks = nullptr);
   // For a problem's model (buildModel): its settings, walls and velocity histories.
-  OtmMethod(Model model, const Problem& problem);
+  OtmMethod(Model model, const Problem& problem, const parallel::Communicator* ranks = nullptr);
   OtmMethod(const OtmMethod&) = delete;
   OtmMethod& operator=(const OtmMethod&) = delete;
 
@@ -26,7 +31,7 @@ class OtmMethod final : public Method {
   double endTime() const override { return integrator_.settings().end_time; }
   Clock clock() const override;
   Energies energies() const override { return integrator_.energies(); }
-  const PhaseTimers& timers() const override { return integrator_.timers(); }
+  const PhaseTimers& timers() const override { return report_ ? report_->timers : integrator_.timers(); }
   const ParticleState& state() const override { return model_; }
   NodeCloud nodes() const override { return model_.nodes.cloud(); }
   std::vector<std::pair<std::string, double>> sizes() const override;
@@ -35,6 +40,8 @@ class OtmMethod final : public Method {
   double addedPressure(LocalIndex p) const override;
   void save(StateWriter& out) const override;
   void load(const StateReader& in) override;
+  bool distributed() const override { return distribution_ != nullptr; }
+  std::unique_ptr<Method> gathered() const override;
 
   // OTM's own state, for its checkpoint and its verification problems.
   const Model& model() const { return model_; }
@@ -52,10 +59,23 @@ class OtmMethod final : public Method {
   // The histories' nodes in the store's current order (after the Morton sort or a restart).
   void locateHistories();
 
+  // What a gathered method reports for the distributed run it stands for (rank 0's timers, the
+  // ranks and their balance, the notes of every rank).
+  struct Report {
+    PhaseTimers timers;
+    std::vector<std::pair<std::string, double>> sizes;
+    std::vector<std::string> notes;
+  };
+  // The sizes and notes of the whole run (collective in a distributed run).
+  std::vector<std::pair<std::string, double>> rankSizes() const;
+  std::vector<std::string> tornNotes(LocalIndex torn, double mass) const;
+
   Model model_;
-  Integrator integrator_;  // holds a reference to model_
+  std::unique_ptr<Distribution> distribution_;  // a distributed run's; before the integrator, which holds it
+  Integrator integrator_;                       // holds a reference to model_
   Diagnostics diagnostics_;
   std::vector<History> histories_;
+  std::optional<Report> report_;  // a gathered method's
 };
 
 }  // namespace kessler::otm
