@@ -71,11 +71,7 @@ void Halo::dropGhosts(Store& store) {
   std::vector<LocalIndex> own;
   for (std::size_t i = 0; i < ghost_.size(); ++i)
     if (!ghost_[i]) own.push_back(static_cast<LocalIndex>(i));
-  std::vector<std::byte> buffer;
-  packFields(store, std::span<const LocalIndex>(own), buffer);
-  resizeFields(store, 0);
-  unpackFields(store, buffer, 0, own.size());
-  store.owned = static_cast<LocalIndex>(own.size());
+  keepFields(store, own);
   ghost_.clear();
   ghosts_ = 0;
   for (auto& list : send_) list.clear();

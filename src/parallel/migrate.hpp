@@ -47,17 +47,24 @@ void migrate(Store& store, std::span<const int> destination, const Communicator&
                  "migrating {} destinations for a store of {} entries, {} owned (ghosts must be dropped first)",
                  destination.size(), store.x.size(), store.owned);
   const auto ranks = static_cast<std::size_t>(comm.size());
+  const auto me = static_cast<std::size_t>(comm.rank());
+  // What stays stays where it is; only what leaves is packed.
   std::vector<std::vector<LocalIndex>> leaving(ranks);
+  std::vector<LocalIndex> staying;
   for (std::size_t i = 0; i < destination.size(); ++i) {
     KESSLER_VERIFY(destination[i] >= 0 && static_cast<std::size_t>(destination[i]) < ranks,
                    "entry {} sent to rank {} of {}", i, destination[i], ranks);
-    leaving[static_cast<std::size_t>(destination[i])].push_back(static_cast<LocalIndex>(i));
+    (static_cast<std::size_t>(destination[i]) == me ? staying : leaving[static_cast<std::size_t>(destination[i])])
+        .push_back(static_cast<LocalIndex>(i));
   }
   const std::vector<std::vector<std::byte>> incoming = comm.exchange(packEntries(store, leaving));
-  resizeFields(store, 0);
+  if (staying.size() < destination.size()) keepFields(store, staying);
   unpackEntries(store, incoming);
   store.owned = static_cast<LocalIndex>(store.x.size());
-  permuteFields(store, idOrder(store));
+  // Sorted only where arrivals (or the store as it came) are out of id order.
+  bool ordered = true;
+  for (std::size_t i = 1; i < store.id.size() && ordered; ++i) ordered = store.id[i - 1] < store.id[i];
+  if (!ordered) permuteFields(store, idOrder(store));
 }
 
 }  // namespace kessler::parallel

@@ -30,6 +30,19 @@ void permuteFields(Store& store, const std::vector<LocalIndex>& order) {
   });
 }
 
+// Keeps the entries `keep` (ascending) of every array, in place, and drops the others; all owned.
+template <class Store>
+void keepFields(Store& store, const std::vector<LocalIndex>& keep) {
+  Store::fields(store, [&](const char*, auto& values, const auto&) {
+    for (std::size_t k = 0; k < keep.size(); ++k) {
+      const auto from = static_cast<std::size_t>(keep[k]);
+      if (from != k) values[k] = values[from];
+    }
+    values.resize(keep.size());
+  });
+  store.owned = static_cast<LocalIndex>(keep.size());
+}
+
 // The permutation that puts a store's entries in id order (for permuteFields): the order of the
 // whole run, which any rank's part keeps (docs/parallel.md, "One order on every rank").
 template <class Store>

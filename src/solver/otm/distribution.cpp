@@ -119,6 +119,7 @@ void Distribution::rebuild(Model& model, std::vector<double>& volume_rate, doubl
   }
   parallel::migrate(travelling, owners(points, partition_), comm_);
   parallel::migrate(nodes, owners(nodes, partition_), comm_);
+  own_points_ = points.owned;
   const double own = static_cast<double>(points.owned);
   const auto total = static_cast<double>(comm_.sum(static_cast<std::int64_t>(points.owned)));
   imbalance_ = comm_.max(own) / std::max(total / comm_.size(), 1.0);

@@ -69,6 +69,10 @@ class Distribution {
   // What sums and minima over the points count, and the ranks they run over.
   Share pointShare() const { return {points_.ghostMask(), &comm_}; }
   Share nodeShare() const { return {nodes_.ghostMask(), &comm_}; }
+  // This rank's own points and its ghosts, at the last rebuild.
+  LocalIndex ownPoints() const { return own_points_; }
+  LocalIndex ghostPointCount() const { return points_.ghosts(); }
+  LocalIndex ghostNodeCount() const { return nodes_.ghosts(); }
   // The support radius the halos were last built for, m.
   double support() const { return support_; }
 
@@ -78,6 +82,7 @@ class Distribution {
   parallel::Halo points_, nodes_;
   double support_ = 0.0;
   double imbalance_ = 1.0, largest_imbalance_ = 1.0;
+  LocalIndex own_points_ = 0;
   int rebalances_ = 0;
 };
 

@@ -80,7 +80,10 @@ void Integrator::search() {
   const double cutoff = lme::cutoffRadius(settings_.lme_gamma, 1.0, settings_.lme_tolerance) * own.max(spacing);
   double radius = 1.25 * std::max(cutoff, neighbourhoods_.largestRadius());
   for (;;) {
-    rebuildHalos(radius);
+    {
+      ScopedPhase phase(timers_, "halo");
+      rebuildHalos(radius);
+    }
     if (neighbourhoods_.update(model_, share(), distribution_->nodeShare(), radius)) return;
     radius = std::max(1.25 * radius, neighbourhoods_.largestRadius());
   }
@@ -170,15 +173,21 @@ void Integrator::advance(double dt) {
     ScopedPhase phase(timers_, "node update");
     // Discrete Euler-Lagrange equations for a variable step (docs/theory.md §4 step 2).
     updateNodes(dt, 0.5 * (dt_last_ + dt));
-    // A ghost node gathered only the points this rank holds: its owner's update replaces it.
-    if (distribution_) {
-      distribution_->refreshNodes(model_.nodes);
-      distribution_->refreshNodes(increment_);
-    }
+  }
+  // A ghost node gathered only the points this rank holds: its owner's update replaces it.
+  if (distribution_) {
+    ScopedPhase phase(timers_, "halo");
+    distribution_->refreshNodes(model_.nodes);
+    distribution_->refreshNodes(increment_);
   }
   {
     ScopedPhase phase(timers_, "point update");
     updatePoints();
+  }
+  if (refresh_seconds_ > 0.0) {
+    timers_.add("point update", -refresh_seconds_);
+    timers_.add("halo", refresh_seconds_);
+    refresh_seconds_ = 0.0;
   }
   {
     ScopedPhase phase(timers_, "constitutive");
@@ -312,9 +321,11 @@ void Integrator::updatePoints() {
   // A ghost point near the edge of the halo moved with nodes it may not all hold, and averaged over
   // patches it may not all see: its owner's values replace what this rank got.
   if (distribution_) {
+    const Stopwatch watch;
     distribution_->refreshPoints(points);
     for (std::vector<double>* a : {&j_point_, &transfer_heat_, &force_work_}) distribution_->refreshPoints(*a);
     patch_.forEachPointArray([&](std::vector<double>& a) { distribution_->refreshPoints(a); });
+    refresh_seconds_ += watch.seconds();  // booked as "halo", not "point update" (advance())
   }
   volume_rate_.resize(static_cast<std::size_t>(points.owned));
 #pragma omp parallel for schedule(static)

@@ -115,6 +115,7 @@ class Integrator {
   Distribution* distribution_ = nullptr;
   double contact_spacing_ = 0.0;  // a distributed run: the largest reference spacing of a point, m
   double contact_reach_ = 0.0;    // and the debris contact reach its halo holds (rebuildHalos), m
+  double refresh_seconds_ = 0.0;  // the ghost points' refresh within the point update
   Neighbourhoods neighbourhoods_;
   Eigenerosion erosion_;
   DebrisRelease release_;

@@ -108,7 +108,10 @@ std::vector<std::pair<std::string, double>> OtmMethod::rankSizes() const {
   return {{"ranks", distribution_->comm().size()},
           {"imbalance", distribution_->imbalance()},
           {"largest_imbalance", distribution_->largestImbalance()},
-          {"rebalances", distribution_->rebalances()}};
+          {"rebalances", distribution_->rebalances()},
+          {"rank0_own_points", static_cast<double>(distribution_->ownPoints())},
+          {"rank0_ghost_points", static_cast<double>(distribution_->ghostPointCount())},
+          {"rank0_ghost_nodes", static_cast<double>(distribution_->ghostNodeCount())}};
 }
 
 std::vector<std::string> OtmMethod::notes() const {
