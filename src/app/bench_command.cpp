@@ -11,6 +11,7 @@
 #include "core/timer.hpp"
 #include "io/deck.hpp"
 #include "io/fields_writer.hpp"
+#include "parallel/communicator.hpp"
 #include "solver/common/method.hpp"
 
 #include <fmt/format.h>
@@ -30,6 +31,7 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <thread>
 
 extern char** environ;
@@ -82,8 +84,11 @@ const std::vector<std::string> phase_order = {"search",      "shape functions", 
                                               "node update", "point update",    "constitutive",
                                               "erosion",     "time step",       "output"};
 
+// One problem in this process; under mpirun (`ranks` of several), across the ranks, with rank 0
+// writing the fields and reporting (docs/parallel.md).
 nlohmann::json runOne(const BenchProblem& problem, BenchSize size, int steps_wanted,
-                      const std::vector<std::string>& overrides) {
+                      const std::vector<std::string>& overrides,
+                      const parallel::Communicator& ranks = parallel::Communicator::world()) {
   const double target = targetPoints(problem, size);
   const double h = meshSizeFor(problem, size, target);
   const int steps = steps_wanted > 0 ? steps_wanted : defaultSteps(problem, size);
@@ -95,41 +100,46 @@ nlohmann::json runOne(const BenchProblem& problem, BenchSize size, int steps_wan
 
   const double resident_start = residentBytes();  // the program itself, before any model exists
   Stopwatch setup_watch;
-  const std::unique_ptr<Method> method = buildMethod(config);
+  const std::unique_ptr<Method> method = buildMethod(config, &ranks);
   const double meshing = setup_watch.seconds();
+  // Every rank has built the whole model; initialise() keeps its part.
+  const LocalIndex whole_points = method->state().points.owned, whole_nodes = method->nodes().owned;
   method->initialise();
   const double setup = setup_watch.seconds();
   const std::map<std::string, double> before = method->timers().totals();
-  const PointStore& points_store = method->state().points;
-  auto write = [&](io::FieldWriter& writer) {
-    const Clock clock = method->clock();
-    writer.write(clock.steps, clock.time, method->nodes(), points_store);
+  std::optional<io::FieldWriter> writer;
+  if (ranks.root()) writer.emplace(dir);
+  auto write = [&] {
+    std::unique_ptr<Method> gathered = method->gathered();
+    const Method* whole = method->distributed() ? gathered.get() : method.get();
+    if (!whole) return;
+    const Clock clock = whole->clock();
+    writer->write(clock.steps, clock.time, whole->nodes(), whole->state().points);
   };
 
   // Fields are written at the first and the last step, as a run stopped by max_steps does.
-  io::FieldWriter writer(dir);
   double output = 0.0;
   Stopwatch watch;
   std::string status = "ok", message;
   try {
     {
       Stopwatch w;
-      write(writer);
+      write();
       output += w.seconds();
     }
     for (int s = 0; s < steps && !method->finished(); ++s) method->step();
     Stopwatch w;
-    write(writer);
+    write();
     output += w.seconds();
   } catch (const NumericalError& e) {
     status = "failed";
     message = e.what();
   }
   const double wall = watch.seconds();
-  std::filesystem::remove_all(dir);
+  if (ranks.root()) std::filesystem::remove_all(dir);
 
   const int threads = omp_get_max_threads();
-  const double points = points_store.owned;
+  const auto points = static_cast<double>(whole_points);
   const long steps_taken = method->clock().steps;
   const double point_steps = points * static_cast<double>(steps_taken);
   std::map<std::string, double> phases;
@@ -147,26 +157,32 @@ nlohmann::json runOne(const BenchProblem& problem, BenchSize size, int steps_wan
   }
   phase_json["other"] = std::max(wall - accounted, 0.0);
   const double us = point_steps > 0 ? 1e6 * wall / point_steps : 0.0;
-  const double peak = peakResidentBytes();
+  // Memory: the largest rank's, and all ranks' together per point.
+  const double peak = ranks.max(peakResidentBytes());
+  std::int64_t peak_sum = static_cast<std::int64_t>(peakResidentBytes());
+  peak_sum = ranks.sum(peak_sum);
+  const double model_peak = ranks.max(std::max(peakResidentBytes() - resident_start, 0.0));
   nlohmann::json j = {
       {"name", problem.name},
       {"size", sizeName(size)},
       {"status", status},
       {"mesh_size_m", h},
-      {"points", points_store.owned},
-      {"nodes", method->nodes().owned},
+      {"points", whole_points},
+      {"nodes", whole_nodes},
       {"steps", steps_taken},
       {"threads", threads},
+      {"ranks", ranks.size()},
       {"setup_s", setup},
       {"meshing_s", meshing},
       {"wall_s", wall},
       {"us_per_point_step", us},
-      {"core_us_per_point_step", us * threads},
+      {"core_us_per_point_step", us * threads * ranks.size()},
       {"phases_s", phase_json},
       {"phases_us_per_point_step", phase_us},
       {"peak_memory_bytes", peak},
-      {"peak_memory_bytes_per_point", points > 0 ? peak / points : 0.0},
-      {"peak_model_bytes_per_point", points > 0 ? std::max(peak - resident_start, 0.0) / points : 0.0},
+      {"peak_memory_bytes_per_point", points > 0 ? static_cast<double>(peak_sum) / points : 0.0},
+      {"peak_model_bytes_per_point", points > 0 ? model_peak * ranks.size() / points : 0.0},
+      {"peak_memory_bytes_per_rank_point", points > 0 ? peak * ranks.size() / points : 0.0},
       {"quarter_model", quarterModel(problem, size)},
       {"resident_end_bytes_per_point", points > 0 ? residentBytes() / points : 0.0},
       {"load_average", loadAverage()},
@@ -180,9 +196,10 @@ nlohmann::json runOne(const BenchProblem& problem, BenchSize size, int steps_wan
 
 void printResult(const nlohmann::json& r) {
   fmt::print(
-      "{} ({}): {} points, {} nodes, {:.1f} neighbours per point, {} steps, {} thread(s), OpenMP wait policy {}\n",
+      "{} ({}): {} points, {} nodes, {:.1f} neighbours per point, {} steps, {} thread(s){}, OpenMP wait policy {}\n",
       r["name"].get<std::string>(), r["size"].get<std::string>(), r["points"].get<long>(), r["nodes"].get<long>(),
       r["mean_neighbours"].get<double>(), r["steps"].get<long>(), r["threads"].get<int>(),
+      r.value("ranks", 1) > 1 ? fmt::format(" on each of {} ranks", r.value("ranks", 1)) : std::string(),
       r.value("omp_wait_policy", std::string("default")));
   if (r.contains("overrides") && !r["overrides"].empty())
     fmt::print("  with --set {}\n", fmt::join(r["overrides"].get<std::vector<std::string>>(), " --set "));
@@ -252,6 +269,18 @@ void runBench(const BenchOptions& options) {
   for (const std::string& name : names) benchProblem(name);  // unknown names fail before any run
   if (options.threads > 0) omp_set_num_threads(options.threads);
 
+  // Under mpirun every rank runs each problem together, in this process.
+  const parallel::Communicator& world = parallel::Communicator::world();
+  if (world.size() > 1) {
+    nlohmann::json all = {{"size", options.size}, {"ranks", world.size()}, {"problems", nlohmann::json::array()}};
+    for (const std::string& name : names) {
+      nlohmann::json r = runOne(benchProblem(name), size, options.steps, options.overrides, world);
+      if (world.root()) printResult(r);
+      all["problems"].push_back(std::move(r));
+    }
+    if (world.root() && !options.json.empty()) writeJson(options.json, all);
+    return;
+  }
   if (options.single) {
     KESSLER_VERIFY(names.size() == 1, "bench --single runs exactly one problem");
     log::setLevel(log::Level::quiet);

@@ -8,8 +8,12 @@ namespace {
 int exit_code = 0;
 }
 
-void setExitCode(int code) { exit_code = code; }
-int exitCode() { return exit_code; }
+void setExitCode(int code) {
+  exit_code = code;
+}
+int exitCode() {
+  return exit_code;
+}
 
 void addCommands(CLI::App& app) {
   addRunCommands(app);

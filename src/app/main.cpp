@@ -16,14 +16,14 @@ int main(int argc, char** argv) {
   const kessler::parallel::Communicator& world = kessler::parallel::Communicator::world();
   const bool distributed = world.size() > 1;
   if (distributed) {
-    // Under mpirun the ranks run one problem together (docs/parallel.md): `run` alone does so yet.
+    // Under mpirun the ranks run one problem together (docs/parallel.md): `run` and `bench` do so.
     const char* command = nullptr;
     for (int i = 1; i < argc && !command; ++i)
       if (argv[i][0] != '-') command = argv[i];
-    if (!command || std::string_view(command) != "run") {
+    if (!command || (std::string_view(command) != "run" && std::string_view(command) != "bench")) {
       if (world.root())
         fmt::print(stderr,
-                   "kessler: error: started on {} ranks; only `kessler run` runs across ranks (docs/parallel.md), "
+                   "kessler: error: started on {} ranks; only `kessler run` and `kessler bench` run across ranks "
                    "so run `{}` without mpirun\n",
                    world.size(), command ? command : "kessler");
       return 1;

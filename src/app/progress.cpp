@@ -29,11 +29,13 @@ void Progress::finish(long step, double time, double dt) {
 
 void Progress::print(long step, double time, double dt, bool final) {
   const double elapsed = watch_.seconds();
-  const double rate = elapsed > 0.0 ? static_cast<double>(step - start_step_) * static_cast<double>(points_) / elapsed : 0.0;
+  const double rate =
+      elapsed > 0.0 ? static_cast<double>(step - start_step_) * static_cast<double>(points_) / elapsed : 0.0;
   const double fraction = end_time_ > 0.0 ? time / end_time_ : 0.0;
   const double eta = fraction > 0.0 ? elapsed * (1.0 - fraction) / fraction : 0.0;
-  const std::string line = fmt::format("step {:>7}  t {:>10.4g} s ({:5.1f}%)  dt {:9.3g} s  {:9.3g} point-steps/s  {} {:.0f} s",
-                                       step, time, 100.0 * fraction, dt, rate, final ? "wall" : "ETA", final ? elapsed : eta);
+  const std::string line =
+      fmt::format("step {:>7}  t {:>10.4g} s ({:5.1f}%)  dt {:9.3g} s  {:9.3g} point-steps/s  {} {:.0f} s", step, time,
+                  100.0 * fraction, dt, rate, final ? "wall" : "ETA", final ? elapsed : eta);
   if (terminal_) {
     fmt::print("\r{}{}", line, final ? "\n" : "");
   } else {

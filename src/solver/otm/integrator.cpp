@@ -84,8 +84,12 @@ void Integrator::search() {
       ScopedPhase phase(timers_, "halo");
       rebuildHalos(radius);
     }
-    if (neighbourhoods_.update(model_, share(), distribution_->nodeShare(), radius)) return;
+    if (neighbourhoods_.update(model_, share(), distribution_->nodeShare(), radius)) {
+      halo_support_ = radius;
+      return;
+    }
     radius = std::max(1.25 * radius, neighbourhoods_.largestRadius());
+    ++searches_repeated_;
   }
 }
 

@@ -77,6 +77,9 @@ class Integrator {
   // this process started: not kept across a restart), and their mass.
   LocalIndex tornPoints() const { return neighbourhoods_.tornPoints(); }
   double tornMass() const { return neighbourhoods_.tornMass(); }
+  // A distributed run: searches done again with a wider halo, and the search radius the last halo held.
+  long searchesRepeated() const { return searches_repeated_; }
+  double haloSupport() const { return halo_support_; }
   double lastStep() const { return dt_last_; }
   double nextStep() const { return dt_next_; }
   double initialStep() const { return dt_initial_; }
@@ -116,6 +119,8 @@ class Integrator {
   double contact_spacing_ = 0.0;  // a distributed run: the largest reference spacing of a point, m
   double contact_reach_ = 0.0;    // and the debris contact reach its halo holds (rebuildHalos), m
   double refresh_seconds_ = 0.0;  // the ghost points' refresh within the point update
+  long searches_repeated_ = 0;    // searches done again with a wider halo (search())
+  double halo_support_ = 0.0;     // the search radius the last halo held, m
   Neighbourhoods neighbourhoods_;
   Eigenerosion erosion_;
   DebrisRelease release_;

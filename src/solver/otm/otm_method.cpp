@@ -98,7 +98,8 @@ std::vector<std::pair<std::string, double>> OtmMethod::sizes() const {
   const double points = model_.points.owned;
   std::vector<std::pair<std::string, double>> sizes{
       {"mean_neighbours", points > 0 ? static_cast<double>(model_.connectivity.node.size()) / points : 0.0}};
-  if (report_) sizes.insert(sizes.end(), report_->sizes.begin(), report_->sizes.end());
+  const std::vector<std::pair<std::string, double>> ranks = report_ ? report_->sizes : rankSizes();
+  sizes.insert(sizes.end(), ranks.begin(), ranks.end());
   return sizes;
 }
 
@@ -109,6 +110,8 @@ std::vector<std::pair<std::string, double>> OtmMethod::rankSizes() const {
           {"imbalance", distribution_->imbalance()},
           {"largest_imbalance", distribution_->largestImbalance()},
           {"rebalances", distribution_->rebalances()},
+          {"searches_repeated", static_cast<double>(integrator_.searchesRepeated())},
+          {"halo_search_radius_m", integrator_.haloSupport()},
           {"rank0_own_points", static_cast<double>(distribution_->ownPoints())},
           {"rank0_ghost_points", static_cast<double>(distribution_->ghostPointCount())},
           {"rank0_ghost_nodes", static_cast<double>(distribution_->ghostNodeCount())}};
