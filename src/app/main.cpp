@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
       if (world.root())
         fmt::print(stderr,
                    "kessler: error: started on {} ranks; only `kessler run` and `kessler bench` run across ranks "
-                   "so run `{}` without mpirun\n",
+                   "(docs/parallel.md), so run `{}` without mpirun\n",
                    world.size(), command ? command : "kessler");
       return 1;
     }
@@ -37,9 +37,14 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // (Every rank parses the same command line: rank 0 says what is wrong.)
+    return world.root() ? app.exit(e) : e.get_exit_code();
   } catch (const kessler::NumericalError& e) {
-    // Every rank of a distributed run stops a failing step together: rank 0 reports it.
+    // Every rank of a distributed run stops a failing step together, and reads the same input:
+    // rank 0 reports it.
+    if (world.root()) fmt::print(stderr, "kessler: error: {}\n", e.what());
+    return 1;
+  } catch (const kessler::InputError& e) {
     if (world.root()) fmt::print(stderr, "kessler: error: {}\n", e.what());
     return 1;
   } catch (const kessler::Error& e) {

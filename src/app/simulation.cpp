@@ -94,6 +94,11 @@ class Run {
 
 RunOutcome Run::execute() {
   const StopSignals signals;
+  if (options_.restart && world_.size() > 1)
+    throw InputError(
+        fmt::format("--restart {}: a run does not yet restart on several ranks (docs/parallel.md); "
+                    "restart it without mpirun",
+                    dir_.string()));
   if (options_.restart && !std::filesystem::exists(checkpoint_file_))
     throw InputError(
         fmt::format("--restart {}: no checkpoint.h5 there (the run stopped before its first "

@@ -55,16 +55,6 @@ std::size_t nodeBytes() {
   return entryBytes(nodes);
 }
 
-// Keeps the entries `keep` of a store (in their order), all owned.
-template <class Store>
-void keepEntries(Store& store, const std::vector<LocalIndex>& keep) {
-  std::vector<std::byte> buffer;
-  packFields(store, std::span<const LocalIndex>(keep), buffer);
-  resizeFields(store, 0);
-  unpackFields(store, buffer, 0, keep.size());
-  store.owned = static_cast<LocalIndex>(keep.size());
-}
-
 template <class Store>
 std::vector<int> owners(const Store& store, const parallel::Partition& partition) {
   std::vector<int> rank(store.x.size());
@@ -97,8 +87,8 @@ void Distribution::split(Model& model) {
   model.lme_lambda.resize(n, Vec3::Zero());
   std::vector<double> no_rate(n, 0.0);
   TravellingPoints travelling(points, model.lme_lambda, no_rate);
-  keepEntries(travelling, mine(points));
-  keepEntries(model.nodes, mine(model.nodes));
+  keepFields(travelling, mine(points));
+  keepFields(model.nodes, mine(model.nodes));
   model.connectivity = Connectivity{};
 }
 
@@ -160,6 +150,7 @@ std::optional<Model> Distribution::gather(const Model& model) const {
   std::vector<Vec3> lambda = model.lme_lambda;
   lambda.resize(points.x.size(), Vec3::Zero());
   std::vector<double> no_rate(points.x.size(), 0.0);
+  // (Packing only reads: the adaptor holds its arrays by plain reference for the writers too.)
   TravellingPoints travelling(const_cast<PointStore&>(points), lambda, no_rate);
   std::vector<std::byte> point_bytes, node_bytes, row_bytes;
   packFields(travelling, std::span<const LocalIndex>(own_points), point_bytes);

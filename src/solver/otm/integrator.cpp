@@ -383,12 +383,17 @@ void Integrator::updateMaterials(double dt) {
 #pragma omp parallel for schedule(static)
     for (LocalIndex p = 0; p < points.owned; ++p) force_work_[p] += points.mass[p] * points.energy[p];
   }
+  // A material that refuses a point's state stops every rank (the others hold no copy of it).
+  LocalIndex refused = -1;
+  std::string why;
   try {
     for (std::size_t b = 0; b < model_.bodies.size(); ++b)
       model_.materials[model_.bodies[b].material]->update(points, body_points_[b].begin, body_points_[b].end, dt);
   } catch (const PointError& e) {
-    failAtPoint(static_cast<LocalIndex>(e.point()), e.what());
+    refused = static_cast<LocalIndex>(e.point());
+    why = e.what();
   }
+  stopIfAny(refused >= 0, [&] { failAtPoint(refused, why); });
   LocalIndex bad = points.owned;
   const Share own = share();
 #pragma omp parallel for schedule(static) reduction(min : bad)
