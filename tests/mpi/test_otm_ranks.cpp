@@ -148,5 +148,36 @@ TEST(DistributedStep, FracturingImpactBitwiseAsOneProcess) {
   EXPECT_GT(struck, 0) << "no debris struck a body";
 }
 
+// A cell list over a sparse set (a debris cloud) is enlarged by the set's extent and count: ranks
+// that each hold a part and some of the others' (ghosts) must agree on the whole set's size, or their
+// searches meet their candidates in another order. The whole set here needs the enlargement, and no
+// rank's part does on its own.
+TEST(DistributedStep, CellSizeAgreedAsForTheWholeSet) {
+  const int ranks = world().size(), me = world().rank();
+  std::vector<Vec3> whole;
+  for (int i = 0; i < 400; ++i)  // a dense block, and a few points far out
+    whole.emplace_back(1e-3 * (i % 8), 1e-3 * ((i / 8) % 8), 1e-3 * (i / 64));
+  for (int i = 0; i < 12; ++i) whole.emplace_back(0.05 * i, -0.03 * i, 0.02 * (i % 3));
+  const double cell = 1.2e-3;
+  const double expected =
+      CellList::enlargedSize(CellList::boundsOf(whole, static_cast<LocalIndex>(whole.size())), whole.size(), cell);
+  ASSERT_GT(expected, cell) << "the whole set must need enlarging";
+  // Rank r owns every ranks-th point from r, and holds the next rank's first ten as ghosts.
+  std::vector<Vec3> mine;
+  std::int64_t own = 0;
+  for (std::size_t i = static_cast<std::size_t>(me); i < whole.size(); i += static_cast<std::size_t>(ranks), ++own)
+    mine.push_back(whole[i]);
+  for (std::size_t i = static_cast<std::size_t>((me + 1) % ranks), k = 0; k < 10;
+       i += static_cast<std::size_t>(ranks), ++k)
+    mine.push_back(whole[i]);
+  const Share share{{}, &world()};
+  const double agreed = agreedCellSize(mine, static_cast<LocalIndex>(mine.size()), own, cell, share);
+  EXPECT_EQ(agreed, expected);
+  // What each rank's part alone would choose differs from the whole's somewhere.
+  const double alone = CellList::enlargedSize(CellList::boundsOf(mine, static_cast<LocalIndex>(mine.size())),
+                                              static_cast<std::int64_t>(mine.size()), cell);
+  EXPECT_TRUE(world().any(alone != expected)) << "the test needs a part that would choose another size";
+}
+
 }  // namespace
 }  // namespace kessler::otm
