@@ -110,7 +110,7 @@ nlohmann::json runOne(const BenchProblem& problem, BenchSize size, int steps_wan
   std::optional<io::FieldWriter> writer;
   if (ranks.root()) writer.emplace(dir);
   auto write = [&] {
-    std::unique_ptr<Method> gathered = method->gathered();
+    std::unique_ptr<Method> gathered = method->gathered(false);
     const Method* whole = method->distributed() ? gathered.get() : method.get();
     if (!whole) return;
     const Clock clock = whole->clock();

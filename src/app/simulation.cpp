@@ -44,12 +44,12 @@ class Run {
     record_.history.push_back({clock.steps, clock.time, clock.dt_last, method_->energies()});
   }
   void output();
-  // The whole run for output, analysis and checkpoints: the method itself on one process, or on
-  // rank 0 of a distributed run its gathered state (nullptr on the other ranks). Every rank must
-  // call it alike (docs/parallel.md).
-  const Method* whole() {
+  // The whole run for output, analysis and (`for_checkpoint`) checkpoints: the method itself on one
+  // process, or on rank 0 of a distributed run its gathered state (nullptr on the other ranks).
+  // Every rank must call it alike (docs/parallel.md).
+  const Method* whole(bool for_checkpoint = false) {
     if (!method_->distributed()) return method_.get();
-    gathered_ = method_->gathered();
+    gathered_ = method_->gathered(for_checkpoint);
     return gathered_.get();
   }
   bool root() const { return world_.root(); }
@@ -248,7 +248,7 @@ void Run::checkpoint() {
   const double every = config_.checkpoint.every;
   if (every > 0.0)
     while (next_checkpoint_ <= time() * (1.0 + 1e-9)) next_checkpoint_ += every;
-  const Method* run = whole();
+  const Method* run = whole(true);
   if (root()) {
     const io::RunLoopState loop{next_output_,        next_checkpoint_, previous_wall_seconds_ + wall_.seconds(),
                                 record_.outputs,     record_.history,  writer_->pointGrids(),

@@ -73,10 +73,11 @@ class Method {
 
   // A distributed run (docs/parallel.md): whether this rank holds a part of the run only, and the
   // whole run as one process's method (collective): on rank 0 a method whose state, nodes, clock,
-  // energies and save() are the whole run's, for output, analysis and checkpoints; nullptr on the
+  // energies, sizes and notes are the whole run's, for output, analysis and the summary, and with
+  // `for_checkpoint` its save() too (OTM then gathers its connectivity as well); nullptr on the
   // other ranks, and from a method that is whole already.
   virtual bool distributed() const { return false; }
-  virtual std::unique_ptr<Method> gathered() const { return nullptr; }
+  virtual std::unique_ptr<Method> gathered(bool /*for_checkpoint*/) const { return nullptr; }
 };
 
 }  // namespace kessler

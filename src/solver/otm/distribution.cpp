@@ -133,7 +133,7 @@ void Distribution::rebuild(Model& model, std::vector<double>& volume_rate, doubl
   model.connectivity = Connectivity{};
 }
 
-std::optional<Model> Distribution::gather(const Model& model) const {
+std::optional<Model> Distribution::gather(const Model& model, bool rows) const {
   const PointStore& points = model.points;
   const NodeStore& nodes = model.nodes;
   const Connectivity& conn = model.connectivity;
@@ -146,26 +146,35 @@ std::optional<Model> Distribution::gather(const Model& model) const {
   const std::vector<LocalIndex> own_points = ownOf(ghostPoints(), points.owned);
   const std::vector<LocalIndex> own_nodes = ownOf(ghostNodes(), nodes.owned);
 
-  // Points with their multipliers, nodes, and each own point's row with node ids for indices.
+  // Points (with their multipliers, for a checkpoint), nodes, and for a checkpoint each own point's
+  // row with node ids for indices: its length, then its ids, weights and gradients.
   std::vector<Vec3> lambda = model.lme_lambda;
   lambda.resize(points.x.size(), Vec3::Zero());
   std::vector<double> no_rate(points.x.size(), 0.0);
   // (Packing only reads: the adaptor holds its arrays by plain reference for the writers too.)
   TravellingPoints travelling(const_cast<PointStore&>(points), lambda, no_rate);
   std::vector<std::byte> point_bytes, node_bytes, row_bytes;
-  packFields(travelling, std::span<const LocalIndex>(own_points), point_bytes);
+  if (rows)
+    packFields(travelling, std::span<const LocalIndex>(own_points), point_bytes);
+  else
+    packFields(points, std::span<const LocalIndex>(own_points), point_bytes);
   packFields(nodes, std::span<const LocalIndex>(own_nodes), node_bytes);
-  auto append = [&](const auto& value) {
-    const std::size_t at = row_bytes.size();
-    row_bytes.resize(at + sizeof value);
-    std::memcpy(row_bytes.data() + at, &value, sizeof value);
-  };
-  for (const LocalIndex p : own_points) {
-    append(static_cast<std::int64_t>(conn.offset[p + 1] - conn.offset[p]));
-    for (Index e = conn.offset[p]; e < conn.offset[p + 1]; ++e) {
-      append(nodes.id[conn.node[e]]);
-      append(conn.N[e]);
-      append(conn.dN[e]);
+  constexpr std::size_t entry_bytes = sizeof(Index) + sizeof(double) + sizeof(Vec3);
+  if (rows) {
+    std::size_t total = 0;
+    for (const LocalIndex p : own_points)
+      total += sizeof(std::int64_t) + static_cast<std::size_t>(conn.offset[p + 1] - conn.offset[p]) * entry_bytes;
+    row_bytes.resize(total);
+    std::byte* at = row_bytes.data();
+    auto put = [&](const auto& value) {
+      std::memcpy(at, &value, sizeof value);
+      at += sizeof value;
+    };
+    for (const LocalIndex p : own_points) {
+      put(static_cast<std::int64_t>(conn.offset[p + 1] - conn.offset[p]));
+      for (Index e = conn.offset[p]; e < conn.offset[p + 1]; ++e) put(nodes.id[conn.node[e]]);
+      for (Index e = conn.offset[p]; e < conn.offset[p + 1]; ++e) put(conn.N[e]);
+      for (Index e = conn.offset[p]; e < conn.offset[p + 1]; ++e) put(conn.dN[e]);
     }
   }
   const auto points_in = comm_.gather(point_bytes);
@@ -174,75 +183,73 @@ std::optional<Model> Distribution::gather(const Model& model) const {
   if (!comm_.root()) return std::nullopt;
 
   Model whole;
-  static_cast<ParticleState&>(whole) = static_cast<const ParticleState&>(model);
-  whole.points = PointStore{};
+  whole.bodies = model.bodies;
+  whole.materials = model.materials;
+  whole.adjacency = model.adjacency;
+  whole.adjacency_length0 = model.adjacency_length0;
   std::vector<Vec3> whole_lambda;
   std::vector<double> whole_rate;
   TravellingPoints all(whole.points, whole_lambda, whole_rate);
-  resizeFields(all, 0);
-  resizeFields(whole.nodes, 0);
+  const std::size_t point_entry = rows ? travellingBytes() : entryBytes(whole.points);
   for (std::size_t r = 0; r < points_in.size(); ++r) {
-    const std::size_t point_count = points_in[r].size() / travellingBytes();
-    unpackFields(all, points_in[r], 0, point_count);
+    if (rows)
+      unpackFields(all, points_in[r], 0, points_in[r].size() / point_entry);
+    else
+      unpackFields(whole.points, points_in[r], 0, points_in[r].size() / point_entry);
     unpackFields(whole.nodes, nodes_in[r], 0, nodes_in[r].size() / nodeBytes());
   }
   whole.points.owned = whole.points.size();
   whole.nodes.owned = whole.nodes.size();
-  // Rows in the order the points arrived, then everything in id order.
-  std::vector<std::int64_t> count;
-  std::vector<Index> row_ids;
-  std::vector<double> row_N;
-  std::vector<Vec3> row_dN;
-  for (const std::vector<std::byte>& bytes : rows_in) {
-    std::size_t at = 0;
-    auto take = [&](auto& value) {
-      KESSLER_VERIFY(at + sizeof value <= bytes.size(), "gathering rows: a message of {} bytes", bytes.size());
-      std::memcpy(static_cast<void*>(&value), bytes.data() + at, sizeof value);
-      at += sizeof value;
-    };
-    while (at < bytes.size()) {
-      std::int64_t n = 0;
-      take(n);
-      count.push_back(n);
-      for (std::int64_t k = 0; k < n; ++k) {
-        Index id = 0;
-        double N = 0.0;
-        Vec3 dN;
-        take(id);
-        take(N);
-        take(dN);
-        row_ids.push_back(id);
-        row_N.push_back(N);
-        row_dN.push_back(dN);
-      }
-    }
-  }
-  KESSLER_VERIFY(count.size() == whole.points.x.size(), "gathered {} rows for {} points", count.size(),
-                 whole.points.x.size());
-  std::vector<std::size_t> start(count.size() + 1, 0);
-  for (std::size_t i = 0; i < count.size(); ++i) start[i + 1] = start[i] + static_cast<std::size_t>(count[i]);
+  // Everything in id order, the rows with node indices.
   const std::vector<LocalIndex> point_order = idOrder(whole.points);
-  permuteFields(all, point_order);
+  if (rows)
+    permuteFields(all, point_order);
+  else
+    permuteFields(whole.points, point_order);
   permuteFields(whole.nodes, idOrder(whole.nodes));
-  const IdIndex node_index(whole.nodes.id);
-  Connectivity& rows = whole.connectivity;
-  rows.offset.assign(count.size() + 1, 0);
-  for (std::size_t i = 0; i < count.size(); ++i)
-    rows.offset[i + 1] = rows.offset[i] + static_cast<Index>(count[static_cast<std::size_t>(point_order[i])]);
-  rows.resizeRows(static_cast<std::size_t>(rows.offset.back()));
-  for (std::size_t i = 0; i < count.size(); ++i) {
-    const std::size_t from = start[static_cast<std::size_t>(point_order[i])];
-    for (Index k = 0; k < rows.offset[i + 1] - rows.offset[i]; ++k) {
-      const auto e = static_cast<std::size_t>(rows.offset[i] + k), f = from + static_cast<std::size_t>(k);
-      const LocalIndex a = node_index.find(row_ids[f]);
-      KESSLER_VERIFY(a >= 0, "gathering rows: node {} is no rank's own", row_ids[f]);
-      rows.node[e] = a;
-      rows.N[e] = row_N[f];
-      rows.dN[e] = row_dN[f];
+  whole.lme_lambda = rows ? std::move(whole_lambda) : std::vector<Vec3>(whole.points.x.size(), Vec3::Zero());
+  if (!rows) return whole;
+
+  // Where each point's row starts in the messages, in the order the points arrived.
+  struct Row {
+    const std::byte* at = nullptr;
+    std::int64_t length = 0;
+  };
+  std::vector<Row> arrived;
+  arrived.reserve(whole.points.x.size());
+  for (const std::vector<std::byte>& bytes : rows_in)
+    for (const std::byte* at = bytes.data(); at < bytes.data() + bytes.size();) {
+      Row row;
+      std::memcpy(&row.length, at, sizeof row.length);
+      row.at = at + sizeof row.length;
+      at = row.at + static_cast<std::size_t>(row.length) * entry_bytes;
+      KESSLER_VERIFY(at <= bytes.data() + bytes.size(), "gathering rows: a message of {} bytes", bytes.size());
+      arrived.push_back(row);
     }
+  KESSLER_VERIFY(arrived.size() == whole.points.x.size(), "gathered {} rows for {} points", arrived.size(),
+                 whole.points.x.size());
+  const IdIndex node_index(whole.nodes.id);
+  Connectivity& out = whole.connectivity;
+  out.offset.assign(arrived.size() + 1, 0);
+  for (std::size_t i = 0; i < arrived.size(); ++i)
+    out.offset[i + 1] = out.offset[i] + static_cast<Index>(arrived[static_cast<std::size_t>(point_order[i])].length);
+  out.resizeRows(static_cast<std::size_t>(out.offset.back()));
+  for (std::size_t i = 0; i < arrived.size(); ++i) {
+    const Row& row = arrived[static_cast<std::size_t>(point_order[i])];
+    const auto n = static_cast<std::size_t>(row.length);
+    const auto e = static_cast<std::size_t>(out.offset[i]);
+    const std::byte* ids = row.at;
+    for (std::size_t k = 0; k < n; ++k) {
+      Index id = 0;
+      std::memcpy(&id, ids + k * sizeof(Index), sizeof id);
+      const LocalIndex a = node_index.find(id);
+      KESSLER_VERIFY(a >= 0, "gathering rows: node {} is no rank's own", id);
+      out.node[e + k] = a;
+    }
+    std::memcpy(static_cast<void*>(out.N.data() + e), ids + n * sizeof(Index), n * sizeof(double));
+    std::memcpy(static_cast<void*>(out.dN.data() + e), ids + n * (sizeof(Index) + sizeof(double)), n * sizeof(Vec3));
   }
-  rows.buildTranspose(whole.nodes.size());
-  whole.lme_lambda = std::move(whole_lambda);
+  out.buildTranspose(whole.nodes.size());
   return whole;
 }
 

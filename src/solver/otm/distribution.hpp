@@ -39,9 +39,10 @@ class Distribution {
                double contact_reach);
 
   // The whole run as one process holds it, on rank 0 (nullopt elsewhere): every rank's own points
-  // and nodes in id order, their connectivity and LME multipliers, and the shared bodies,
-  // materials and links. What output, analysis and checkpoints read. Collective.
-  std::optional<Model> gather(const Model& model) const;
+  // and nodes in id order and the shared bodies, materials and links (what output and analysis
+  // read), and with `rows` the connectivity and LME multipliers (what a checkpoint adds; zero
+  // multipliers and no connectivity without). Collective.
+  std::optional<Model> gather(const Model& model, bool rows) const;
 
   // The largest rank's own points over the mean, at the last rebuild; and the largest so far.
   double imbalance() const { return imbalance_; }

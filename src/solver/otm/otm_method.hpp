@@ -41,7 +41,7 @@ class OtmMethod final : public Method {
   void save(StateWriter& out) const override;
   void load(const StateReader& in) override;
   bool distributed() const override { return distribution_ != nullptr; }
-  std::unique_ptr<Method> gathered() const override;
+  std::unique_ptr<Method> gathered(bool for_checkpoint) const override;
 
   // OTM's own state, for its checkpoint and its verification problems.
   const Model& model() const { return model_; }
