@@ -40,15 +40,15 @@ int main(int argc, char** argv) {
     // (Every rank parses the same command line: rank 0 says what is wrong.)
     return world.root() ? app.exit(e) : e.get_exit_code();
   } catch (const kessler::NumericalError& e) {
-    // Every rank of a distributed run stops a failing step together, and reads the same input:
-    // rank 0 reports it.
+    // One handler at the top: a one-line message, non-zero exit, never a stack trace. Every rank of
+    // a distributed run stops a failing step together: rank 0 reports it.
     if (world.root()) fmt::print(stderr, "kessler: error: {}\n", e.what());
     return 1;
   } catch (const kessler::InputError& e) {
+    // (Every rank reads the same input.)
     if (world.root()) fmt::print(stderr, "kessler: error: {}\n", e.what());
     return 1;
   } catch (const kessler::Error& e) {
-    // One handler at the top: a one-line message, non-zero exit, never a stack trace.
     if (!distributed) {
       fmt::print(stderr, "kessler: error: {}\n", e.what());
       return 1;
