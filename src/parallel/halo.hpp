@@ -51,8 +51,9 @@ class Halo {
   int neighbours() const { return static_cast<int>(std::max(to_.size(), from_.size())); }
 
  private:
-  // Sends pack(rank, buffer) to each rank this rank sends to, and calls unpack(rank, bytes) for each
-  // message from a rank it receives from, whose size incoming_bytes(rank) gives.
+  // One message to each rank this rank sends to, filled by pack(entries, buffer) with the entries
+  // that rank needs, and one from each rank it receives from, of incoming_bytes(slots) bytes, given
+  // to unpack(slots, bytes) with the slots its ghosts sit in.
   template <class Pack, class Size, class Unpack>
   void send(Pack&& pack, Size&& incoming_bytes, Unpack&& unpack) const;
 
