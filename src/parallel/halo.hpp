@@ -62,6 +62,7 @@ class Halo {
   std::vector<std::vector<LocalIndex>> slot_;  // per rank, where each ghost from it sits, in its order
   std::vector<int> to_, from_;                 // the ranks this rank sends to and receives from
   std::vector<std::uint8_t> ghost_;            // per entry of the store
+  std::vector<std::byte> scratch_;             // build()'s reordering, kept between builds
   LocalIndex ghosts_ = 0;
 };
 
@@ -108,7 +109,7 @@ void Halo::build(Store& store, const Partition& partition, std::span<const doubl
                    store.id[order[k]]);
     at[static_cast<std::size_t>(order[k])] = static_cast<LocalIndex>(k);
   }
-  permuteFields(store, order);
+  permuteFields(store, order, scratch_);
   store.owned = static_cast<LocalIndex>(n);
   ghost_.assign(n, 0);
   slot_.assign(ranks, {});
