@@ -172,10 +172,7 @@ template <class Store>
 void Halo::refreshFields(Store& store) const {
   KESSLER_VERIFY(ghost_.empty() || store.x.size() == ghost_.size(),
                  "refreshing a store of {} entries with a halo of {}", store.x.size(), ghost_.size());
-  std::size_t entry_bytes = 0;  // one entry of every array
-  Store::fields(store, [&](const char*, const auto& values, const auto&) {
-    entry_bytes += sizeof(typename std::remove_reference_t<decltype(values)>::value_type);
-  });
+  const std::size_t entry_bytes = fieldBytes(store);
   send([&](const std::vector<LocalIndex>& list,
            std::vector<std::byte>& buffer) { packFields(store, std::span<const LocalIndex>(list), buffer); },
        [&](const std::vector<LocalIndex>& slots) { return slots.size() * entry_bytes; },

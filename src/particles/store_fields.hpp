@@ -70,6 +70,16 @@ struct PlainValue
 template <class T>
 inline constexpr bool bytewise = PlainValue<T>::value;
 
+// The bytes one entry takes in every array (what packFields writes per entry).
+template <class Store>
+std::size_t fieldBytes(Store& store) {
+  std::size_t bytes = 0;
+  Store::fields(store, [&](const char*, const auto& values, const auto&) {
+    bytes += sizeof(typename std::remove_reference_t<decltype(values)>::value_type);
+  });
+  return bytes;
+}
+
 // Appends entries `which` of every array to `buffer`, array by array in fields() order (raw bytes:
 // the arrays hold trivially copyable values).
 template <class Store>

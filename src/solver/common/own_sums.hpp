@@ -3,6 +3,7 @@
 // (docs/parallel.md): ghosts are someone else's and count there. Without a communicator (one
 // process) every entry is own. Sums are exact (core/exact_sum.hpp), so they are the same bits for
 // any partition.
+#include "core/error.hpp"
 #include "core/exact_sum.hpp"
 #include "parallel/communicator.hpp"
 #include "search/cell_list.hpp"
@@ -23,6 +24,15 @@ struct Share {
   double max(double value) const { return comm ? comm->max(value) : value; }
   std::int64_t sum(std::int64_t value) const { return comm ? comm->sum(value) : value; }
   bool any(bool flag) const { return comm ? comm->any(flag) : flag; }
+  // Stops every rank when `failed_here` is true on any (the others would wait for it): this rank
+  // calls fail(), which throws; the others throw NumericalError(`elsewhere`). One process: fail()
+  // if failed_here.
+  template <class Fail>
+  void stopTogether(bool failed_here, Fail&& fail, const char* elsewhere) const {
+    const bool anywhere = any(failed_here);
+    if (failed_here) fail();
+    if (anywhere) throw NumericalError(elsewhere);
+  }
 };
 
 // sum over the own entries i < n of term(i) (an Eigen vector of K components), over every rank.

@@ -34,28 +34,6 @@ struct TravellingPoints {
 };
 
 template <class Store>
-std::size_t entryBytes(Store& store) {
-  std::size_t bytes = 0;
-  Store::fields(store, [&](const char*, const auto& values, const auto&) {
-    bytes += sizeof(typename std::remove_reference_t<decltype(values)>::value_type);
-  });
-  return bytes;
-}
-
-std::size_t travellingBytes() {
-  PointStore points;
-  std::vector<Vec3> lambda;
-  std::vector<double> rate;
-  TravellingPoints t(points, lambda, rate);
-  return entryBytes(t);
-}
-
-std::size_t nodeBytes() {
-  NodeStore nodes;
-  return entryBytes(nodes);
-}
-
-template <class Store>
 std::vector<int> owners(const Store& store, const parallel::Partition& partition) {
   std::vector<int> rank(store.x.size());
   for (std::size_t i = 0; i < rank.size(); ++i) rank[i] = partition.owner(store.x[i]);
@@ -117,7 +95,6 @@ void Distribution::rebuild(Model& model, std::vector<double>& volume_rate, doubl
 
   double ball = 0.0;  // the largest erosion ball
   for (LocalIndex p = 0; p < points.owned; ++p) ball = std::max(ball, erosion_radius * points.spacing(p));
-  support_ = support;
   ball = comm_.max(ball);
   // Points: a rank's own nodes gather from every point whose support holds them (one radius), the
   // volume averaging of its own points reads the points of their nodes' patches (two), the erosion
@@ -126,8 +103,8 @@ void Distribution::rebuild(Model& model, std::vector<double>& volume_rate, doubl
   // Nodes: those of the rows of every point held (two radii and one more), and those an own debris
   // point may strike.
   const std::vector<double> point_reach(static_cast<std::size_t>(points.owned),
-                                        std::max({2.0 * support_, ball, 2.0 * contact_reach}));
-  const std::vector<double> node_reach(static_cast<std::size_t>(nodes.owned), std::max(3.0 * support_, contact_reach));
+                                        std::max({2.0 * support, ball, 2.0 * contact_reach}));
+  const std::vector<double> node_reach(static_cast<std::size_t>(nodes.owned), std::max(3.0 * support, contact_reach));
   points_.build(travelling, partition_, point_reach, comm_);
   nodes_.build(nodes, partition_, node_reach, comm_);
   model.connectivity = Connectivity{};
@@ -190,13 +167,13 @@ std::optional<Model> Distribution::gather(const Model& model, bool rows) const {
   std::vector<Vec3> whole_lambda;
   std::vector<double> whole_rate;
   TravellingPoints all(whole.points, whole_lambda, whole_rate);
-  const std::size_t point_entry = rows ? travellingBytes() : entryBytes(whole.points);
+  const std::size_t point_entry = rows ? fieldBytes(all) : fieldBytes(whole.points);
   for (std::size_t r = 0; r < points_in.size(); ++r) {
     if (rows)
       unpackFields(all, points_in[r], 0, points_in[r].size() / point_entry);
     else
       unpackFields(whole.points, points_in[r], 0, points_in[r].size() / point_entry);
-    unpackFields(whole.nodes, nodes_in[r], 0, nodes_in[r].size() / nodeBytes());
+    unpackFields(whole.nodes, nodes_in[r], 0, nodes_in[r].size() / fieldBytes(whole.nodes));
   }
   whole.points.owned = whole.points.size();
   whole.nodes.owned = whole.nodes.size();

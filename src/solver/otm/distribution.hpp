@@ -74,14 +74,11 @@ class Distribution {
   LocalIndex ownPoints() const { return own_points_; }
   LocalIndex ghostPointCount() const { return points_.ghosts(); }
   LocalIndex ghostNodeCount() const { return nodes_.ghosts(); }
-  // The support radius the halos were last built for, m.
-  double support() const { return support_; }
 
  private:
   const parallel::Communicator& comm_;
   parallel::Partition partition_;
   parallel::Halo points_, nodes_;
-  double support_ = 0.0;
   double imbalance_ = 1.0, largest_imbalance_ = 1.0;
   LocalIndex own_points_ = 0;
   int rebalances_ = 0;

@@ -15,6 +15,12 @@
 
 namespace kessler::otm {
 
+namespace {
+
+constexpr const char* kAnotherRank = "another rank stopped the step (its message says why)";
+
+}  // namespace
+
 Integrator::Integrator(Model& model, const Settings& settings, Distribution* distribution)
     : model_(model),
       settings_(settings),
@@ -93,41 +99,40 @@ void Integrator::search() {
   }
 }
 
-void Integrator::rebuildHalos(double support) {
-  // What a debris contact may reach in the next step (solver/common/debris_contact.hpp): the two
-  // spacings of a pair and twice its flight over the kick, for a step up to twice this one.
-  const PointStore& points = model_.points;
-  const Share own = share();
-  double spacing = 0.0, speed = 0.0;
-  for (LocalIndex p = 0; p < points.owned; ++p) {
-    if (!own.own(p)) continue;
-    spacing = std::max(spacing, points.spacing0[p]);
-    if (points.debris(p)) speed = std::max(speed, points.v[p].norm());
-  }
-  contact_spacing_ = own.max(spacing);
-  contact_reach_ = 2.0 * contact_spacing_ + 2.0 * own.max(speed) * 2.0 * std::max(dt_last_, dt_next_);
-  distribution_->rebuild(model_, volume_rate_, support, settings_.erosion_radius, contact_reach_);
-  findBodyRanges();
-}
-
-void Integrator::requireContactReach(double dt_kick) const {
+// The fastest debris point's speed over every rank, m/s.
+double Integrator::debrisSpeed() const {
   const PointStore& points = model_.points;
   const Share own = share();
   double speed = 0.0;
   for (LocalIndex p = 0; p < points.owned; ++p)
     if (own.own(p) && points.debris(p)) speed = std::max(speed, points.v[p].norm());
-  if (own.any(2.0 * contact_spacing_ + 2.0 * speed * dt_kick > contact_reach_))
+  return own.max(speed);
+}
+
+void Integrator::rebuildHalos(double support) {
+  // What a debris contact may reach in the next step (solver/common/debris_contact.hpp): the two
+  // spacings of a pair and twice its flight over the kick, for a step up to twice this one. The
+  // reference spacings do not change: their largest is found once.
+  const Share own = share();
+  if (contact_spacing_ == 0.0) {
+    const PointStore& points = model_.points;
+    double spacing = 0.0;
+    for (LocalIndex p = 0; p < points.owned; ++p)
+      if (own.own(p)) spacing = std::max(spacing, points.spacing0[p]);
+    contact_spacing_ = own.max(spacing);
+  }
+  contact_reach_ = 2.0 * contact_spacing_ + 2.0 * debrisSpeed() * 2.0 * std::max(dt_last_, dt_next_);
+  distribution_->rebuild(model_, volume_rate_, support, settings_.erosion_radius, contact_reach_);
+  findBodyRanges();
+}
+
+void Integrator::requireContactReach(double dt_kick) const {
+  const double speed = debrisSpeed();  // the same on every rank, so every rank stops
+  if (2.0 * contact_spacing_ + 2.0 * speed * dt_kick > contact_reach_)
     throw NumericalError(
         fmt::format("debris flies further in a step than a distributed run's halo holds ({:.3g} m "
                     "at {:.3g} m/s over {:.3g} s; docs/parallel.md, \"The distributed step\")",
-                    contact_reach_, own.max(speed), dt_kick));
-}
-
-template <class Fail>
-void Integrator::stopIfAny(bool failed_here, Fail&& fail) const {
-  const bool anywhere = share().any(failed_here);
-  if (failed_here) fail();
-  if (anywhere) throw NumericalError("another rank stopped the step (its message says why)");
+                    contact_reach_, speed, dt_kick));
 }
 
 void Integrator::restore(const IntegratorState& state) {
@@ -315,10 +320,13 @@ void Integrator::updatePoints() {
     points.v[p] += dv;
     points.dF[p] = dF;
   }
-  stopIfAny(bad < points.owned, [&] {
-    failAtPoint(
-        bad, fmt::format("volume inverted or collapsed: det(dF) = {:.6g} over the step", points.dF[bad].determinant()));
-  });
+  share().stopTogether(
+      bad < points.owned,
+      [&] {
+        failAtPoint(bad, fmt::format("volume inverted or collapsed: det(dF) = {:.6g} over the step",
+                                     points.dF[bad].determinant()));
+      },
+      kAnotherRank);
   stabilisation_energy_ +=
       patch_.apply(conn, model_.nodes.owned, settings_.volume_averaging, settings_.volume_stabilisation,
                    settings_.volume_relaxation, dt_step_, points, j_point_, own);
@@ -393,7 +401,8 @@ void Integrator::updateMaterials(double dt) {
     refused = static_cast<LocalIndex>(e.point());
     why = e.what();
   }
-  stopIfAny(refused >= 0, [&] { failAtPoint(refused, why); });
+  share().stopTogether(
+      refused >= 0, [&] { failAtPoint(refused, why); }, kAnotherRank);
   LocalIndex bad = points.owned;
   const Share own = share();
 #pragma omp parallel for schedule(static) reduction(min : bad)
@@ -401,8 +410,9 @@ void Integrator::updateMaterials(double dt) {
     if (own.own(p) && (!points.stress[p].allFinite() || !std::isfinite(points.energy[p]) ||
                        !(points.debris(p) || points.sound_speed[p] >= 0.0)))  // debris takes no part in the time step
       bad = std::min(bad, p);
-  stopIfAny(bad < points.owned,
-            [&] { failAtPoint(bad, "the material update gave a non-finite stress, energy or sound speed"); });
+  share().stopTogether(
+      bad < points.owned,
+      [&] { failAtPoint(bad, "the material update gave a non-finite stress, energy or sound speed"); }, kAnotherRank);
 }
 
 double stepLength(const Model& model, LocalIndex p) {

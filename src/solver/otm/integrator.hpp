@@ -105,12 +105,9 @@ class Integrator {
   void rebuildHalos(double support);
   // What sums and minima over points count: all (one process) or this rank's own, over every rank.
   Share share() const { return distribution_ ? distribution_->pointShare() : Share{}; }
-  // Stops every rank of a distributed run when `failed_here` is true on any: this rank calls fail()
-  // (which throws); the others throw that another rank stopped the step. One process: fail() if failed_here.
-  template <class Fail>
-  void stopIfAny(bool failed_here, Fail&& fail) const;
   // Stops a distributed run whose debris flies beyond the halo's contact reach in this kick.
   void requireContactReach(double dt_kick) const;
+  double debrisSpeed() const;
   [[noreturn]] void failAtPoint(LocalIndex p, const std::string& what) const;
 
   Model& model_;

@@ -406,18 +406,19 @@ void Neighbourhoods::apply(Model& model, const Share& share, const Pending& pend
     points.stress[p].setZero();
     points.viscous_pressure[p] = 0.0;
   }
-  const bool failed_here = pending.failed >= 0;
-  const bool anywhere = share.any(failed_here);
-  if (failed_here) {
-    const LocalIndex failed = pending.failed;
-    const Vec3& x = points.x[failed];
-    throw NumericalError(fmt::format(
-        "LME shape functions failed at material point {} of body '{}' at ({:.6g}, {:.6g}, {:.6g}) m: {} "
-        "({} nodes, residual {:.3g} h after {} iterations)",
-        points.id[failed], model.bodies[points.body[failed]].name, x[0], x[1], x[2],
-        lme::describe(pending.failure.status), count_[failed], pending.failure.residual, pending.failure.iterations));
-  }
-  if (anywhere) throw NumericalError("another rank's shape functions failed (its message says where)");
+  share.stopTogether(
+      pending.failed >= 0,
+      [&] {
+        const LocalIndex failed = pending.failed;
+        const Vec3& x = points.x[failed];
+        throw NumericalError(fmt::format(
+            "LME shape functions failed at material point {} of body '{}' at ({:.6g}, {:.6g}, {:.6g}) m: {} "
+            "({} nodes, residual {:.3g} h after {} iterations)",
+            points.id[failed], model.bodies[points.body[failed]].name, x[0], x[1], x[2],
+            lme::describe(pending.failure.status), count_[failed], pending.failure.residual,
+            pending.failure.iterations));
+      },
+      "another rank's shape functions failed (its message says where)");
 }
 
 }  // namespace kessler::otm

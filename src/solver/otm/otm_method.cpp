@@ -78,15 +78,16 @@ void OtmMethod::check(double initial_total_energy) {
     return;
   }
   // Every rank stops if one does (the others would wait for it).
+  const Share share = distribution_->pointShare();
   std::optional<NumericalError> failure;
   try {
-    diagnostics_.check(model_, at, initial_total_energy, distribution_->pointShare());
+    diagnostics_.check(model_, at, initial_total_energy, share);
   } catch (const NumericalError& e) {
     failure = e;
   }
-  const bool anywhere = distribution_->comm().any(failure.has_value());
-  if (failure) throw *failure;
-  if (anywhere) throw NumericalError(fmt::format("{}: another rank's health check failed", describeStep(at)));
+  const std::string elsewhere = fmt::format("{}: another rank's health check failed", describeStep(at));
+  share.stopTogether(
+      failure.has_value(), [&] { throw *failure; }, elsewhere.c_str());
 }
 
 Clock OtmMethod::clock() const {
