@@ -29,6 +29,15 @@ void Connectivity::resizeRows(std::size_t entries) {
   resizeWithHeadroom(dN, entries);
 }
 
+void Connectivity::clear() {
+  offset.clear();
+  node.clear();
+  N.clear();
+  dN.clear();
+  node_offset.clear();
+  node_slot.clear();
+}
+
 void Connectivity::buildTranspose(LocalIndex node_count) {
   std::vector<std::uint32_t> scratch;
   buildTranspose(node_count, scratch);

@@ -33,6 +33,10 @@ struct Connectivity {
   // changes a little every step: when they must grow they take 1/8 of headroom, where
   // std::vector::resize would double them (hvi-100k: 0.9 KB per point of capacity never used).
   void resizeRows(std::size_t entries);
+  // No rows, the arrays' memory kept: a distributed run forgets its rows at every halo build, and
+  // memory freed and taken again each step costs a page fault per page written (hvi-100k on 2 ranks:
+  // the shape functions took twice as long per point).
+  void clear();
   // Builds node_offset and node_slot from offset and node, in parallel; the result
   // does not depend on the thread count. `scratch` (threads x nodes 32-bit counters, like the
   // entries) may be kept by the caller so that the time loop does not allocate.

@@ -107,7 +107,7 @@ void Distribution::rebuild(Model& model, std::vector<double>& volume_rate, doubl
   const std::vector<double> node_reach(static_cast<std::size_t>(nodes.owned), std::max(3.0 * support, contact_reach));
   points_.build(travelling, partition_, point_reach, comm_);
   nodes_.build(nodes, partition_, node_reach, comm_);
-  model.connectivity = Connectivity{};
+  model.connectivity.clear();
 }
 
 std::optional<Model> Distribution::gather(const Model& model, bool rows) const {
