@@ -27,15 +27,19 @@ std::unique_ptr<Method> buildMethod(const io::RunConfig& config, const parallel:
   return makeMethod(deckProblem(config), ranks);
 }
 
-std::unique_ptr<Method> restoreMethod(const io::RunConfig& config, const std::filesystem::path& file,
-                                      io::RunLoopState& loop) {
+RestoredRun restoreMethod(const io::RunConfig& config, const std::filesystem::path& file,
+                          const parallel::Communicator* ranks) {
   Problem problem = deckProblem(config);
   problem.bodies.clear();  // restored, not meshed
-  io::Restored restored = io::readCheckpoint(
-      file, deckMaterials(config),
-      [&](ParticleState&& state) -> std::unique_ptr<Method> { return makeMethod(problem, std::move(state)); });
-  loop = std::move(restored.loop);
-  return std::move(restored.method);
+  RestoredRun run;
+  io::Restored restored =
+      io::readCheckpoint(file, deckMaterials(config), [&](ParticleState&& state) -> std::unique_ptr<Method> {
+        run.points = state.points.owned;  // the whole run's, before a distributed method keeps its part
+        return makeMethod(problem, std::move(state), ranks);
+      });
+  run.loop = std::move(restored.loop);
+  run.method = std::move(restored.method);
+  return run;
 }
 
 }  // namespace kessler::app

@@ -20,9 +20,18 @@ Problem deckProblem(const io::RunConfig& config);
 // With `ranks` of several processes (mpirun), each builds the whole model and keeps its part.
 std::unique_ptr<Method> buildMethod(const io::RunConfig& config, const parallel::Communicator* ranks = nullptr);
 
-// The method, ready to step, and the run loop's state from a checkpoint of a run of this deck
-// (io::writeCheckpoint).
-std::unique_ptr<Method> restoreMethod(const io::RunConfig& config, const std::filesystem::path& file,
-                                      io::RunLoopState& loop);
+// A run restored from a checkpoint: the method, ready to step, the run loop's state, and the
+// material points of the whole run.
+struct RestoredRun {
+  std::unique_ptr<Method> method;
+  io::RunLoopState loop;
+  long points = 0;
+};
+
+// From a checkpoint of a run of this deck (io::writeCheckpoint), written by one process or by any
+// number of ranks. With `ranks` of several processes, each reads the whole checkpoint and keeps its
+// part.
+RestoredRun restoreMethod(const io::RunConfig& config, const std::filesystem::path& file,
+                          const parallel::Communicator* ranks = nullptr);
 
 }  // namespace kessler::app

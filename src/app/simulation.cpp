@@ -94,17 +94,14 @@ class Run {
 
 RunOutcome Run::execute() {
   const StopSignals signals;
-  if (options_.restart && world_.size() > 1)
-    throw InputError(
-        fmt::format("--restart {}: a run does not yet restart on several ranks (docs/parallel.md); "
-                    "restart it without mpirun",
-                    dir_.string()));
   if (options_.restart && !std::filesystem::exists(checkpoint_file_))
     throw InputError(
         fmt::format("--restart {}: no checkpoint.h5 there (the run stopped before its first "
                     "checkpoint): start it again from its deck",
                     dir_.string()));
-  // Rank 0 writes the run folder; a distributed run's other ranks only compute.
+  // Rank 0 writes the run folder; a distributed run's other ranks only compute. A restart's ranks
+  // have all read its resolved deck before rank 0 writes it again.
+  if (options_.restart) world_.any(false);
   if (root()) {
     std::filesystem::create_directories(dir_);
     io::writeResolvedDeck(config_, dir_ / "deck.resolved.yaml");
@@ -193,9 +190,10 @@ void Run::start() {
 // A restart: the model, the integrator and the run's bookkeeping from the checkpoint.
 void Run::resume() {
   Stopwatch restoring;
-  io::RunLoopState loop;
-  method_ = restoreMethod(config_, checkpoint_file_, loop);
-  points_ = method_->state().points.owned;
+  RestoredRun restored = restoreMethod(config_, checkpoint_file_, &world_);
+  method_ = std::move(restored.method);
+  points_ = restored.points;
+  const io::RunLoopState& loop = restored.loop;
   record_.history = loop.history;
   record_.outputs = loop.outputs;
   KESSLER_VERIFY(!record_.history.empty(), "checkpoint '{}' holds no history", checkpoint_file_.string());
@@ -204,13 +202,18 @@ void Run::resume() {
   previous_wall_seconds_ = loop.wall_seconds;
   checkpoint_step_ = steps();
   // Outputs written after the checkpoint belong to a future this run recomputes.
-  removeOutputsOutside(dir_, loop.point_grids);
-  writer_->restoreSeries(loop.point_grids, loop.node_grids);
-  io::writeHistory(dir_ / "history.csv", record_.history);
+  if (root()) {
+    removeOutputsOutside(dir_, loop.point_grids);
+    writer_->restoreSeries(loop.point_grids, loop.node_grids);
+    io::writeHistory(dir_ / "history.csv", record_.history);
+  }
   record_.extra_timings["restore"] = restoring.seconds();
-  log::info("restarting from {}: step {}, t = {:.6g} s; {} material points, {} nodes; {} threads",
-            checkpoint_file_.string(), steps(), time(), method_->state().points.owned, method_->nodes().owned,
-            record_.threads);
+  if (world_.size() > 1)
+    log::info("restarting from {}: step {}, t = {:.6g} s; {} material points; {} ranks of {} threads",
+              checkpoint_file_.string(), steps(), time(), points_, world_.size(), record_.threads);
+  else
+    log::info("restarting from {}: step {}, t = {:.6g} s; {} material points, {} nodes; {} threads",
+              checkpoint_file_.string(), steps(), time(), points_, method_->nodes().owned, record_.threads);
 }
 
 // One step, with its checks, and the output and checkpoint that fall due after it.

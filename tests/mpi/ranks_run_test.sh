@@ -3,7 +3,8 @@
 # same results (every field file, history.csv, points.xdmf and nodes.xdmf; compare_runs).
 #   ranks_run_test.sh RANKS MPIEXEC KESSLER COMPARE_RUNS DECK WORK [--set ...]
 # RANKS 1 writes the one-process reference, WORK/one (the fixture of the others). RANKS `restart`
-# stops a 2-rank run halfway (solver.max_steps) and finishes it on one process from its checkpoint.
+# runs it in four parts (solver.max_steps), each restarted from the last one's checkpoint on another
+# number of ranks: 1, 2, 3, then 1.
 set -euo pipefail
 ranks=$1 mpiexec=$2 kessler=$3 compare=$4 deck=$5 work=$6
 shift 6
@@ -17,15 +18,22 @@ if [ "$ranks" = 1 ]; then
   exit 0
 fi
 if [ "$ranks" = restart ]; then
+  # A checkpoint restarts on any number of ranks: one process stops at a quarter of the steps, 2 ranks
+  # go on to half, 3 ranks to three quarters, and one process finishes.
   dir=$work/restart
   rm -rf "$dir"
-  half=$(($(json "$work/one" steps) / 2))
-  "$mpiexec" -np 2 --oversubscribe "$kessler" run "$deck" --out "$dir" --quiet --threads 1 "$@" \
-    --set solver.max_steps=$half
-  [ "$(json "$dir" status)" = stopped ] || fail "the 2-rank run did not stop at step $half: $(json "$dir" status)"
+  steps=$(json "$work/one" steps)
+  "$kessler" run "$deck" --out "$dir" --quiet --threads 1 "$@" --set solver.max_steps=$((steps / 4))
+  [ "$(json "$dir" status)" = stopped ] || fail "the first quarter did not stop: $(json "$dir" status)"
+  for n in 2 3; do
+    until=$((steps * n / 4))
+    "$mpiexec" -np $n --oversubscribe "$kessler" run --restart "$dir" --quiet --threads 1 --set solver.max_steps=$until
+    [ "$(json "$dir" status)" = stopped ] && [ "$(json "$dir" steps)" = $until ] ||
+      fail "the restart on $n ranks did not stop at step $until: $(json "$dir" status)"
+  done
   "$kessler" run --restart "$dir" --quiet --threads 1 --set solver.max_steps=0
   [ "$(json "$dir" status)" = completed ] || fail "the restarted run did not complete: $(json "$dir" status)"
-  "$compare" "$work/one" "$dir" --min-eroded 20 || fail "2 ranks then one process differ from one process"
+  "$compare" "$work/one" "$dir" --min-eroded 20 || fail "restarted on 1, 2, 3 and 1 ranks, the run differs from one process"
   exit 0
 fi
 dir=$work/ranks$ranks

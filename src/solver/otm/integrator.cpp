@@ -78,13 +78,7 @@ void Integrator::search() {
   // Halos for the widest search of the last step or the widest cut-off now, with a quarter to
   // spare (supports grow as material expands, and a search widens by a quarter at a time);
   // wider, and the search again, while a search reaches beyond them.
-  const PointStore& points = model_.points;
-  const Share own = share();
-  double spacing = 0.0;
-  for (LocalIndex p = 0; p < points.owned; ++p)
-    if (own.own(p) && !points.debris(p)) spacing = std::max(spacing, points.spacing(p));
-  const double cutoff = lme::cutoffRadius(settings_.lme_gamma, 1.0, settings_.lme_tolerance) * own.max(spacing);
-  double radius = 1.25 * std::max(cutoff, neighbourhoods_.largestRadius());
+  double radius = haloRadius(0.0);
   for (;;) {
     {
       ScopedPhase phase(timers_, "halo");
@@ -97,6 +91,16 @@ void Integrator::search() {
     radius = std::max(1.25 * radius, neighbourhoods_.largestRadius());
     ++searches_repeated_;
   }
+}
+
+double Integrator::haloRadius(double reach) const {
+  const PointStore& points = model_.points;
+  const Share own = share();
+  double spacing = 0.0;
+  for (LocalIndex p = 0; p < points.owned; ++p)
+    if (own.own(p) && !points.debris(p)) spacing = std::max(spacing, points.spacing(p));
+  const double cutoff = lme::cutoffRadius(settings_.lme_gamma, 1.0, settings_.lme_tolerance) * own.max(spacing);
+  return 1.25 * std::max({cutoff, neighbourhoods_.largestRadius(), reach});
 }
 
 // The fastest debris point's speed over every rank, m/s.
@@ -136,14 +140,62 @@ void Integrator::requireContactReach(double dt_kick) const {
 }
 
 void Integrator::restore(const IntegratorState& state) {
-  KESSLER_VERIFY(!distribution_, "a distributed run does not yet restart from a checkpoint");
   time_ = state.time;
   dt_last_ = state.dt_last;
   dt_next_ = state.dt_next;
   dt_initial_ = state.dt_initial;
   steps_ = state.steps;
   stabilisation_energy_ = state.stabilisation_energy;
-  findBodyRanges();
+  if (distribution_)
+    distributeRestored();
+  else
+    findBodyRanges();
+}
+
+// Every rank read the whole checkpoint, rows included (each point's nodes by index into the whole
+// node store). The split and the halos are those of a first step, wide enough for the farthest node
+// of any row, so that every point held finds its row's nodes among the nodes held; the rows are then
+// those the one-process run would use, rewritten with this rank's node indices. The results do not
+// depend on where the points are cut, so the run goes on bitwise as the one that wrote the
+// checkpoint, on any number of ranks.
+void Integrator::distributeRestored() {
+  PointStore& points = model_.points;
+  NodeStore& nodes = model_.nodes;
+  Connectivity whole = std::move(model_.connectivity);
+  KESSLER_VERIFY(whole.offset.size() == static_cast<std::size_t>(points.owned) + 1, "restoring {} rows for {} points",
+                 whole.offset.size() - 1, points.owned);
+  const std::vector<Index> point_ids = points.id, node_ids = nodes.id;
+  double reach = 0.0;
+  for (LocalIndex p = 0; p < points.owned; ++p)
+    for (Index e = whole.offset[p]; e < whole.offset[p + 1]; ++e)
+      reach = std::max(reach, (nodes.x[whole.node[e]] - points.x[p]).norm());
+  distribution_->split(model_);
+  const double radius = haloRadius(reach);
+  rebuildHalos(radius);
+  halo_support_ = radius;
+
+  const IdIndex whole_point(point_ids), node_at(nodes.id);
+  Connectivity& conn = model_.connectivity;
+  conn.offset.assign(static_cast<std::size_t>(points.owned) + 1, 0);
+  for (LocalIndex p = 0; p < points.owned; ++p) {
+    const LocalIndex w = whole_point.find(points.id[p]);
+    conn.offset[p + 1] = conn.offset[p] + whole.offset[w + 1] - whole.offset[w];
+  }
+  conn.resizeRows(static_cast<std::size_t>(conn.offset.back()));
+  for (LocalIndex p = 0; p < points.owned; ++p) {
+    const LocalIndex w = whole_point.find(points.id[p]);
+    Index to = conn.offset[p];
+    for (Index e = whole.offset[w]; e < whole.offset[w + 1]; ++e, ++to) {
+      const Index id = node_ids[static_cast<std::size_t>(whole.node[e])];
+      const LocalIndex a = node_at.find(id);
+      KESSLER_VERIFY(a >= 0, "restoring point {}: its node {} is not among the {} nodes held", points.id[p], id,
+                     nodes.size());
+      conn.node[to] = a;
+      conn.N[to] = whole.N[e];
+      conn.dN[to] = whole.dN[e];
+    }
+  }
+  conn.buildTranspose(nodes.size());
 }
 
 // The owned points of each body, together in the store (the Morton sort orders within bodies):

@@ -63,6 +63,8 @@ class Integrator {
   void initialise();
   // Continues from a checkpoint instead of initialise(): the model (with its connectivity)
   // has been restored; the run then proceeds bitwise as it would have without interruption.
+  // A distributed run restores the whole model on every rank, and this keeps the rank's part
+  // (with the rows of the points it holds), whatever the ranks that wrote the checkpoint.
   void restore(const IntegratorState& state);
   IntegratorState state() const { return {time_, dt_last_, dt_next_, dt_initial_, steps_, stabilisation_energy_}; }
   // Advances one step of length nextStep() (clipped to end at settings.end_time). A numerical
@@ -102,7 +104,12 @@ class Integrator {
   // The neighbourhoods and shape functions (Neighbourhoods::update); a distributed run fetches its
   // halos first, for searches up to `support`, and again wider while a search reaches beyond them.
   void search();
+  // The halos' search radius for the next search: the widest of the last step's searches or the
+  // widest cut-off now, with a quarter to spare, and at least `reach`.
+  double haloRadius(double reach) const;
   void rebuildHalos(double support);
+  // restore() on several ranks: the split, the halos and the held points' rows.
+  void distributeRestored();
   // What sums and minima over points count: all (one process) or this rank's own, over every rank.
   Share share() const { return distribution_ ? distribution_->pointShare() : Share{}; }
   // Stops a distributed run whose debris flies beyond the halo's contact reach in this kick.

@@ -191,8 +191,6 @@ void OtmMethod::save(StateWriter& out) const {
 }
 
 void OtmMethod::load(const StateReader& in) {
-  if (distribution_)
-    in.fail("restart on several ranks: a distributed run does not yet restart (docs/parallel.md); run it on one");
   NodeStore& nodes = model_.nodes;
   const std::size_t nn = in.length("/nodes/x");
   NodeStore::fields(nodes, [&](const char* name, auto& values, const auto&) {
@@ -219,7 +217,7 @@ void OtmMethod::load(const StateReader& in) {
     if (conn.offset[p] < conn.offset[p - 1]) in.fail("use the connectivity: offsets decrease");
   for (LocalIndex a : conn.node)
     if (a < 0 || a >= nodes.size()) in.fail(fmt::format("use the connectivity: node {} does not exist", a));
-  conn.buildTranspose(nodes.size());
+  if (!distribution_) conn.buildTranspose(nodes.size());  // a distributed run's, once it holds its part
 
   integrator_.restore({in.doubleScalar("integrator_time"), in.doubleScalar("integrator_dt_last"),
                        in.doubleScalar("integrator_dt_next"), in.doubleScalar("integrator_dt_initial"),
