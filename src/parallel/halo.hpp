@@ -4,8 +4,9 @@
 // x_i +- reach_i (reach: the largest distance at which anything of the other rank can need it, a
 // support radius or an erosion ball). build() sends those entries whole and merges them among the
 // store's own entries in id order, so that the store holds its part of the whole in the whole's
-// order (docs/parallel.md, "One order on every rank"); ghost(i) tells them apart. refresh() later
-// sends only chosen arrays again, into the same slots, in messages between neighbouring ranks
+// order (docs/parallel.md, "One order on every rank"); ghost(i) tells them apart. build() again
+// replaces the ghosts of the last build with those needed now, in one pass over the store. refresh()
+// later sends only chosen arrays again, into the same slots, in messages between neighbouring ranks
 // alone. After build() every entry counts as the store's (`owned` is its size): a method computes
 // ghosts too, and their owners' values replace what it got wrong.
 #include "parallel/communicator.hpp"
@@ -14,6 +15,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -21,13 +23,18 @@ namespace kessler::parallel {
 
 class Halo {
  public:
-  // Removes the ghosts of the last build from the store (the own entries stay, in order).
+  // Removes the ghosts of the last build from the store (the own entries stay, in order): before a
+  // migration.
   template <class Store>
   void dropGhosts(Store& store);
-  // Finds and fetches the ghosts the store's entries need now, from a store without ghosts whose
-  // entries are in id order (as migrate() leaves them); reach[i] for each entry. Collective.
+  // Finds and fetches the ghosts the store's own entries need now, and puts them among the own
+  // entries in id order, in place of the ghosts of the last build (if any). The own entries must be
+  // in id order (as migrate() leaves them); reach[k] for the k-th own entry. Collective.
   template <class Store>
   void build(Store& store, const Partition& partition, std::span<const double> reach, const Communicator& comm);
+  // The own entries of the store, in order (all of them before the first build).
+  template <class Store>
+  std::vector<LocalIndex> ownEntries(const Store& store) const;
 
   // The ghosts' values of one array (sized as the store), sent again by their owners. Collective.
   template <class T>
@@ -83,52 +90,132 @@ void Halo::dropGhosts(Store& store) {
 }
 
 template <class Store>
+std::vector<LocalIndex> Halo::ownEntries(const Store& store) const {
+  KESSLER_VERIFY(ghost_.empty() || ghost_.size() == store.x.size(), "a halo of {} entries for a store of {}",
+                 ghost_.size(), store.x.size());
+  std::vector<LocalIndex> own;
+  own.reserve(store.x.size() - static_cast<std::size_t>(ghosts_));
+  for (std::size_t i = 0; i < store.x.size(); ++i)
+    if (ghost_.empty() || !ghost_[i]) own.push_back(static_cast<LocalIndex>(i));
+  return own;
+}
+
+template <class Store>
 void Halo::build(Store& store, const Partition& partition, std::span<const double> reach, const Communicator& comm) {
   comm_ = &comm;
-  KESSLER_VERIFY(ghosts_ == 0 && store.x.size() == static_cast<std::size_t>(store.owned),
-                 "a halo built on a store that holds ghosts (dropGhosts first)");
-  const LocalIndex own = store.owned;
-  KESSLER_VERIFY(reach.size() == static_cast<std::size_t>(own), "{} reaches for {} entries", reach.size(), own);
-  for (LocalIndex i = 1; i < own; ++i)
-    KESSLER_VERIFY(store.id[i - 1] < store.id[i], "a halo built on a store out of id order (entry {})", i);
+  const std::vector<LocalIndex> own = ownEntries(store);
+  KESSLER_VERIFY(reach.size() == own.size(), "{} reaches for {} own entries", reach.size(), own.size());
+  for (std::size_t k = 1; k < own.size(); ++k)
+    KESSLER_VERIFY(store.id[own[k - 1]] < store.id[own[k]], "a halo built on a store out of id order (entry {})",
+                   own[k]);
   const auto ranks = static_cast<std::size_t>(comm.size());
   send_.assign(ranks, {});
-  for (LocalIndex i = 0; i < own; ++i) {
-    const Vec3 r = Vec3::Constant(reach[static_cast<std::size_t>(i)]);
-    for (const int rank : partition.ranksMeeting(store.x[i] - r, store.x[i] + r))
-      if (rank != comm.rank()) send_[static_cast<std::size_t>(rank)].push_back(i);
+  for (std::size_t k = 0; k < own.size(); ++k) {
+    const Vec3& x = store.x[own[k]];
+    const Vec3 r = Vec3::Constant(reach[k]);
+    for (const int rank : partition.ranksMeeting(x - r, x + r))
+      if (rank != comm.rank()) send_[static_cast<std::size_t>(rank)].push_back(own[k]);
   }
-  const std::vector<std::size_t> received = unpackEntries(store, comm.exchange(packEntries(store, send_)));
+  const std::vector<std::vector<std::byte>> incoming = comm.exchange(packEntries(store, send_));
 
-  // Ghosts among the own entries in id order: where each entry goes, then the lists follow.
-  const std::size_t n = store.x.size();
-  const std::vector<LocalIndex> order = idOrder(store);
-  std::vector<LocalIndex> at(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    KESSLER_VERIFY(k == 0 || store.id[order[k - 1]] != store.id[order[k]], "entry {} is both own and a ghost",
-                   store.id[order[k]]);
-    at[static_cast<std::size_t>(order[k])] = static_cast<LocalIndex>(k);
+  // Each message: its entry count, then each array of its entries in fields() order.
+  constexpr std::size_t header = sizeof(std::uint64_t);
+  std::vector<std::size_t> count(ranks, 0);
+  const std::size_t entry_bytes = fieldBytes(store);
+  std::size_t id_at = 0, before = 0;  // bytes per entry of the arrays before the ids
+  Store::fields(store, [&](const char*, const auto& values, const auto&) {
+    if (static_cast<const void*>(&values) == static_cast<const void*>(&store.id)) id_at = before;
+    before += sizeof(typename std::remove_reference_t<decltype(values)>::value_type);
+  });
+  for (std::size_t r = 0; r < ranks; ++r) {
+    std::uint64_t n = 0;
+    KESSLER_VERIFY(incoming[r].size() >= header, "a message of {} bytes from rank {}", incoming[r].size(), r);
+    std::memcpy(&n, incoming[r].data(), header);
+    count[r] = static_cast<std::size_t>(n);
+    KESSLER_VERIFY(incoming[r].size() == header + count[r] * entry_bytes,
+                   "a message of {} bytes from rank {} for {} entries", incoming[r].size(), r, count[r]);
   }
-  permuteFields(store, order, scratch_);
-  store.owned = static_cast<LocalIndex>(n);
-  ghost_.assign(n, 0);
-  slot_.assign(ranks, {});
-  auto next = static_cast<LocalIndex>(own);  // the received entries, rank by rank, before the merge
-  for (std::size_t r = 0; r < ranks; ++r)
-    for (std::size_t k = 0; k < received[r]; ++k) {
-      const LocalIndex slot = at[static_cast<std::size_t>(next++)];
-      slot_[r].push_back(slot);
-      ghost_[static_cast<std::size_t>(slot)] = 1;
+  auto incomingId = [&](std::size_t r, std::size_t k) {
+    Index id = 0;
+    std::memcpy(&id, incoming[r].data() + header + count[r] * id_at + k * sizeof(Index), sizeof id);
+    return id;
+  };
+
+  // The new store in id order, merged from the own entries and each rank's ghosts (each in id
+  // order): where each entry comes from, rank -1 for this rank's own.
+  struct From {
+    int rank;
+    std::size_t k;  // the own entry's index in the store, or the entry's place in rank's message
+  };
+  std::vector<From> from;
+  std::size_t total = own.size();
+  for (const std::size_t n : count) total += n;
+  from.reserve(total);
+  std::vector<std::size_t> next(ranks, 0);
+  std::size_t next_own = 0;
+  Index last = std::numeric_limits<Index>::min();
+  for (std::size_t i = 0; i < total; ++i) {
+    From best{-1, 0};
+    Index best_id = std::numeric_limits<Index>::max();
+    if (next_own < own.size()) {
+      best = {-1, static_cast<std::size_t>(own[next_own])};
+      best_id = store.id[own[next_own]];
     }
+    for (std::size_t r = 0; r < ranks; ++r)
+      if (next[r] < count[r] && incomingId(r, next[r]) < best_id) {
+        best = {static_cast<int>(r), next[r]};
+        best_id = incomingId(r, next[r]);
+      }
+    KESSLER_VERIFY(i == 0 || best_id > last, "entry {} is held twice (own and a ghost, or from two ranks)", best_id);
+    last = best_id;
+    if (best.rank < 0)
+      ++next_own;
+    else
+      ++next[static_cast<std::size_t>(best.rank)];
+    from.push_back(best);
+  }
+
+  // Every array rewritten in that order, through the kept buffer.
+  before = 0;
+  Store::fields(store, [&](const char*, auto& values, const auto&) {
+    using T = typename std::remove_reference_t<decltype(values)>::value_type;
+    static_assert(bytewise<T>, "a store array must hold plain values to be merged through bytes");
+    scratch_.resize(total * sizeof(T));
+    for (std::size_t i = 0; i < total; ++i) {
+      const std::byte* source = from[i].rank < 0 ? reinterpret_cast<const std::byte*>(&values[from[i].k])
+                                                 : incoming[static_cast<std::size_t>(from[i].rank)].data() + header +
+                                                       count[static_cast<std::size_t>(from[i].rank)] * before +
+                                                       from[i].k * sizeof(T);
+      std::memcpy(scratch_.data() + i * sizeof(T), source, sizeof(T));
+    }
+    values.resize(total);
+    if (total > 0) std::memcpy(static_cast<void*>(values.data()), scratch_.data(), total * sizeof(T));
+    before += sizeof(T);
+  });
+
+  // Where each own entry went (for the lists of what this rank sends), and each ghost sits.
+  std::vector<LocalIndex> at(ghost_.empty() ? store.x.size() : ghost_.size(), -1);
+  ghost_.assign(total, 0);
+  slot_.assign(ranks, {});
+  for (std::size_t r = 0; r < ranks; ++r) slot_[r].reserve(count[r]);
+  for (std::size_t i = 0; i < total; ++i) {
+    if (from[i].rank < 0) {
+      at[from[i].k] = static_cast<LocalIndex>(i);
+    } else {
+      slot_[static_cast<std::size_t>(from[i].rank)].push_back(static_cast<LocalIndex>(i));
+      ghost_[i] = 1;
+    }
+  }
   for (auto& list : send_)
     for (LocalIndex& i : list) i = at[static_cast<std::size_t>(i)];
+  store.owned = static_cast<LocalIndex>(total);
   to_.clear();
   from_.clear();
   for (std::size_t r = 0; r < ranks; ++r) {
     if (!send_[r].empty()) to_.push_back(static_cast<int>(r));
     if (!slot_[r].empty()) from_.push_back(static_cast<int>(r));
   }
-  ghosts_ = static_cast<LocalIndex>(n) - own;
+  ghosts_ = static_cast<LocalIndex>(total - own.size());
 }
 
 template <class Pack, class Size, class Unpack>

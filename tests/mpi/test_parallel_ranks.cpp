@@ -234,13 +234,24 @@ TEST(Ranks, HaloHoldsExactlyTheEntriesThatReachTheSubdomain) {
   halo.refresh(value);
   for (LocalIndex p = 0; p < points.owned; ++p) EXPECT_EQ(value[p], 0.5 + 2.0 * static_cast<double>(points.id[p]));
 
-  // Built again (as after the points moved): the old ghosts go first, the own entries stay.
+  // Built again over the ghosts (as a step does): they are replaced, the own entries kept, in id order.
+  const std::vector<Index> held = points.id;
+  const std::vector<double> mass = points.mass;
+  for (LocalIndex p = 0; p < points.owned; ++p)
+    if (halo.ghost(p)) points.mass[p] = -2.0;  // stale: the new build fetches the owner's value
+  ASSERT_EQ(halo.ownEntries(points).size(), static_cast<std::size_t>(own));
+  halo.build(points, partition, reach, world());
+  EXPECT_EQ(points.id, held);
+  EXPECT_EQ(points.mass, mass);
+  EXPECT_EQ(halo.ghosts(), static_cast<LocalIndex>(expected.size()));
+  // Dropped (before a migration): the own entries stay, in order.
   halo.dropGhosts(points);
   EXPECT_EQ(points.owned, own);
   EXPECT_EQ(points.id, ids[static_cast<std::size_t>(world().rank())]);
   halo.build(points, partition, reach, world());
   EXPECT_EQ(halo.ghosts(), static_cast<LocalIndex>(expected.size()));
-  EXPECT_THROW(halo.build(points, partition, reach, world()), Error);  // still holds ghosts: refused before any message
+  // Reaches for another count of own entries than the store holds: refused before any message.
+  EXPECT_THROW(halo.build(points, partition, std::vector<double>(reach.size() + 1, 0.1), world()), Error);
 }
 
 }  // namespace

@@ -33,10 +33,12 @@ struct TravellingPoints {
   }
 };
 
+// The rank whose subdomain holds each of `entries` now.
 template <class Store>
-std::vector<int> owners(const Store& store, const parallel::Partition& partition) {
-  std::vector<int> rank(store.x.size());
-  for (std::size_t i = 0; i < rank.size(); ++i) rank[i] = partition.owner(store.x[i]);
+std::vector<int> owners(const Store& store, const std::vector<LocalIndex>& entries,
+                        const parallel::Partition& partition) {
+  std::vector<int> rank(entries.size());
+  for (std::size_t k = 0; k < entries.size(); ++k) rank[k] = partition.owner(store.x[entries[k]]);
   return rank;
 }
 
@@ -56,10 +58,9 @@ void Distribution::split(Model& model) {
   partition_.balance(std::span<const Vec3>(points.x).subspan(begin, end - begin),
                      std::span<const Index>(points.id).subspan(begin, end - begin), work);
   auto mine = [&](const auto& store) {
-    const std::vector<int> rank_of = owners(store, partition_);
     std::vector<LocalIndex> keep;
-    for (std::size_t i = 0; i < rank_of.size(); ++i)
-      if (rank_of[i] == comm_.rank()) keep.push_back(static_cast<LocalIndex>(i));
+    for (std::size_t i = 0; i < store.x.size(); ++i)
+      if (partition_.owner(store.x[i]) == comm_.rank()) keep.push_back(static_cast<LocalIndex>(i));
     return keep;
   };
   model.lme_lambda.resize(n, Vec3::Zero());
@@ -77,24 +78,40 @@ void Distribution::rebuild(Model& model, std::vector<double>& volume_rate, doubl
   if (volume_rate.size() != points.x.size()) volume_rate.assign(points.x.size(), 0.0);
   model.lme_lambda.resize(points.x.size(), Vec3::Zero());
   TravellingPoints travelling(points, model.lme_lambda, volume_rate);
-  points_.dropGhosts(travelling);
-  nodes_.dropGhosts(nodes);
   // An impact moves its points, so the balance of the first cut drifts: past `rebalance_at` the
-  // points are cut afresh where they are now.
-  if (imbalance_ > rebalance_at) {
-    partition_.balance(points.x, points.id, std::vector<double>(points.x.size(), 1.0));
-    ++rebalances_;
+  // points are cut afresh where they are now. Entries that left their subdomain move to its owner.
+  // Either way the ghosts go first; most steps neither happens, and the halos' build replaces the
+  // ghosts in place.
+  const bool rebalance = imbalance_ > rebalance_at;  // the same on every rank
+  std::vector<int> point_owner, node_owner;
+  bool leaving = false;
+  if (!rebalance) {
+    point_owner = owners(points, points_.ownEntries(points), partition_);
+    node_owner = owners(nodes, nodes_.ownEntries(nodes), partition_);
+    for (const std::vector<int>* owner : {&point_owner, &node_owner})
+      leaving = leaving || std::any_of(owner->begin(), owner->end(), [&](int r) { return r != comm_.rank(); });
   }
-  parallel::migrate(travelling, owners(points, partition_), comm_);
-  parallel::migrate(nodes, owners(nodes, partition_), comm_);
-  own_points_ = points.owned;
-  const double own = static_cast<double>(points.owned);
-  const auto total = static_cast<double>(comm_.sum(static_cast<std::int64_t>(points.owned)));
+  if (rebalance || comm_.any(leaving)) {
+    points_.dropGhosts(travelling);
+    nodes_.dropGhosts(nodes);
+    if (rebalance) {
+      partition_.balance(points.x, points.id, std::vector<double>(points.x.size(), 1.0));
+      ++rebalances_;
+      point_owner = owners(points, points_.ownEntries(points), partition_);
+      node_owner = owners(nodes, nodes_.ownEntries(nodes), partition_);
+    }
+    parallel::migrate(travelling, point_owner, comm_);
+    parallel::migrate(nodes, node_owner, comm_);
+  }
+  const std::vector<LocalIndex> own_points = points_.ownEntries(points);
+  own_points_ = static_cast<LocalIndex>(own_points.size());
+  const double own = static_cast<double>(own_points_);
+  const auto total = static_cast<double>(comm_.sum(static_cast<std::int64_t>(own_points_)));
   imbalance_ = comm_.max(own) / std::max(total / comm_.size(), 1.0);
   largest_imbalance_ = std::max(largest_imbalance_, imbalance_);
 
   double ball = 0.0;  // the largest erosion ball
-  for (LocalIndex p = 0; p < points.owned; ++p) ball = std::max(ball, erosion_radius * points.spacing(p));
+  for (const LocalIndex p : own_points) ball = std::max(ball, erosion_radius * points.spacing(p));
   ball = comm_.max(ball);
   // Points: a rank's own nodes gather from every point whose support holds them (one radius), the
   // volume averaging of its own points reads the points of their nodes' patches (two), the erosion
@@ -102,9 +119,9 @@ void Distribution::rebuild(Model& model, std::vector<double>& volume_rate, doubl
   // strikes, whose share of the strike counts its other debris (two contact reaches).
   // Nodes: those of the rows of every point held (two radii and one more), and those an own debris
   // point may strike.
-  const std::vector<double> point_reach(static_cast<std::size_t>(points.owned),
-                                        std::max({2.0 * support, ball, 2.0 * contact_reach}));
-  const std::vector<double> node_reach(static_cast<std::size_t>(nodes.owned), std::max(3.0 * support, contact_reach));
+  const std::vector<double> point_reach(own_points.size(), std::max({2.0 * support, ball, 2.0 * contact_reach}));
+  const std::vector<double> node_reach(static_cast<std::size_t>(nodes.size() - nodes_.ghosts()),
+                                       std::max(3.0 * support, contact_reach));
   points_.build(travelling, partition_, point_reach, comm_);
   nodes_.build(nodes, partition_, node_reach, comm_);
   model.connectivity.clear();
