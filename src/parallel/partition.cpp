@@ -219,6 +219,19 @@ std::vector<int> Partition::ranksMeeting(const Vec3& lo, const Vec3& hi) const {
   return ranks;
 }
 
+Box Partition::region(int rank) const {
+  KESSLER_VERIFY(balanced_, "a region asked for before the first balance");
+  constexpr double infinity = std::numeric_limits<double>::infinity();
+  if (comm_.size() == 1) return {Vec3::Constant(-infinity), Vec3::Constant(infinity)};
+  // Zoltan reports an outer face as +-DBL_MAX.
+  Box box = cutBox(rank);
+  for (int k = 0; k < 3; ++k) {
+    if (box.lo[k] <= -std::numeric_limits<double>::max()) box.lo[k] = -infinity;
+    if (box.hi[k] >= std::numeric_limits<double>::max()) box.hi[k] = infinity;
+  }
+  return box;
+}
+
 Box Partition::subdomain(int rank) const {
   KESSLER_VERIFY(balanced_, "a subdomain asked for before the first balance");
   if (comm_.size() == 1) return bounds_;

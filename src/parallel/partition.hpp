@@ -36,6 +36,9 @@ class Partition {
   std::vector<int> ranksMeeting(const Vec3& lo, const Vec3& hi) const;
   // The subdomain of a rank, its outer faces clipped to the box of all points at the last balance.
   Box subdomain(int rank) const;
+  // The region of space owner() gives a rank: its subdomain with the outer faces at +-infinity
+  // (the whole of space on one process).
+  Box region(int rank) const;
 
   struct Zoltan;  // Zoltan's state (opaque here: its callbacks are defined with it)
 

@@ -113,18 +113,29 @@ void Distribution::rebuild(Model& model, std::vector<double>& volume_rate, doubl
   double ball = 0.0;  // the largest erosion ball
   for (const LocalIndex p : own_points) ball = std::max(ball, erosion_radius * points.spacing(p));
   ball = comm_.max(ball);
-  // Points: a rank's own nodes gather from every point whose support holds them (one radius), the
-  // volume averaging of its own points reads the points of their nodes' patches (two), the erosion
-  // of an own point reads its ball, and debris strikes an own node, or a node an own debris point
-  // strikes, whose share of the strike counts its other debris (two contact reaches).
-  // Nodes: those of the rows of every point held (two radii and one more), and those an own debris
-  // point may strike.
-  const std::vector<double> point_reach(own_points.size(), std::max({2.0 * support, ball, 2.0 * contact_reach}));
+  // Points: a rank's own nodes gather from every point whose support holds them (one radius), and
+  // the erosion of an own point reads its ball; debris also strikes an own node, or a node an own
+  // debris point strikes, whose share of the strike counts its other debris (two contact reaches).
+  // (The volume averaging of an own point reads the means of its nodes, which their owners send.)
+  // Nodes: those of the rows of the points searched (two radii), and those an own debris point may
+  // strike.
+  std::vector<double> point_reach(own_points.size());
+  for (std::size_t k = 0; k < own_points.size(); ++k)
+    point_reach[k] =
+        points.debris(own_points[k]) ? std::max({support, ball, 2.0 * contact_reach}) : std::max(support, ball);
   const std::vector<double> node_reach(static_cast<std::size_t>(nodes.size() - nodes_.ghosts()),
-                                       std::max(3.0 * support, contact_reach));
+                                       std::max(2.0 * support, contact_reach));
   points_.build(travelling, partition_, point_reach, comm_);
   nodes_.build(nodes, partition_, node_reach, comm_);
   model.connectivity.clear();
+  // The ghosts whose rows may hold own nodes (which lie in the region: any that left it moved).
+  const parallel::Box region = partition_.region(comm_.rank());
+  searched_.assign(points.x.size(), 1);
+  for (std::size_t p = 0; p < points.x.size(); ++p) {
+    if (!points_.ghost(static_cast<LocalIndex>(p))) continue;
+    const Vec3 outside = (region.lo - points.x[p]).cwiseMax(points.x[p] - region.hi).cwiseMax(0.0);
+    searched_[p] = outside.norm() <= support ? 1 : 0;
+  }
 }
 
 std::optional<Model> Distribution::gather(const Model& model, bool rows) const {

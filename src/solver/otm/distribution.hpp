@@ -5,10 +5,9 @@
 // it got wrong for ghosts (refresh), so that after each refresh every entry a rank holds is bitwise
 // what one process holds for it.
 //
-// Stage one of the design: the halos are fetched afresh before every search, deep enough that each
-// own entry's stencils are whole (points within two support radii, nodes within three and a half),
-// and the points and nodes that left a subdomain move to their new owner then. The cuts are those
-// of the first balance.
+// The halos are fetched again before every search, deep enough that each own node's sums and each
+// own point's stencils are whole (points within one support radius of the subdomain, nodes within
+// two), and the points and nodes that left a subdomain move to their new owner then.
 #include "parallel/communicator.hpp"
 #include "parallel/halo.hpp"
 #include "parallel/partition.hpp"
@@ -29,12 +28,12 @@ class Distribution {
   // Keeps this rank's part of a model that every rank built alike: RCB cuts of the points (each
   // weighted by one), and the points and nodes in this rank's subdomain. No ghosts yet (rebuild).
   void split(Model& model);
-  // Drops the ghosts, moves each own point and node to the rank whose subdomain now holds it, and
-  // fetches the ghosts for searches of radius up to `support` (a point's row holds the nodes within
-  // its search), erosion balls of `erosion_radius` times a point's spacing, and debris contacts
-  // reaching up to `contact_reach` (solver/common/debris_contact.hpp). `volume_rate` (per point; zeros if it has
-  // another size) travels with the points. Collective; the connectivity is stale afterwards (the
-  // search rebuilds it).
+  // Moves each own point and node that left its subdomain to the rank whose subdomain now holds it,
+  // and fetches the ghosts for searches of radius up to `support` (a point's row holds the nodes
+  // within its search), erosion balls of `erosion_radius` times a point's spacing, and debris
+  // contacts reaching up to `contact_reach` (solver/common/debris_contact.hpp). `volume_rate` (per
+  // point; zeros if it has another size) travels with the points. Collective; the connectivity is
+  // stale afterwards (the search rebuilds it, for the points searched()).
   void rebuild(Model& model, std::vector<double>& volume_rate, double support, double erosion_radius,
                double contact_reach);
 
@@ -67,6 +66,10 @@ class Distribution {
   // Per point and per node held, 1 for a ghost.
   std::span<const std::uint8_t> ghostPoints() const { return points_.ghostMask(); }
   std::span<const std::uint8_t> ghostNodes() const { return nodes_.ghostMask(); }
+  // Per point held, 1 for those the search must give a row: the own points, and the ghosts within
+  // the last rebuild's support of the subdomain, whose rows may hold own nodes. The other ghosts are
+  // held for what they are, not for what they move (erosion balls, debris contact).
+  std::span<const std::uint8_t> searched() const { return searched_; }
   // What sums and minima over the points count, and the ranks they run over.
   Share pointShare() const { return {points_.ghostMask(), &comm_}; }
   Share nodeShare() const { return {nodes_.ghostMask(), &comm_}; }
@@ -82,6 +85,7 @@ class Distribution {
   double imbalance_ = 1.0, largest_imbalance_ = 1.0;
   LocalIndex own_points_ = 0;
   int rebalances_ = 0;
+  std::vector<std::uint8_t> searched_;
 };
 
 }  // namespace kessler::otm

@@ -84,7 +84,7 @@ void Integrator::search() {
       ScopedPhase phase(timers_, "halo");
       rebuildHalos(radius);
     }
-    if (neighbourhoods_.update(model_, share(), distribution_->nodeShare(), radius)) {
+    if (neighbourhoods_.update(model_, share(), distribution_->nodeShare(), radius, distribution_->searched())) {
       halo_support_ = radius;
       return;
     }
@@ -174,15 +174,18 @@ void Integrator::distributeRestored() {
   rebuildHalos(radius);
   halo_support_ = radius;
 
+  // Rows for the points a search gives rows (Distribution::searched).
   const IdIndex whole_point(point_ids), node_at(nodes.id);
+  const std::span<const std::uint8_t> searched = distribution_->searched();
   Connectivity& conn = model_.connectivity;
   conn.offset.assign(static_cast<std::size_t>(points.owned) + 1, 0);
   for (LocalIndex p = 0; p < points.owned; ++p) {
     const LocalIndex w = whole_point.find(points.id[p]);
-    conn.offset[p + 1] = conn.offset[p] + whole.offset[w + 1] - whole.offset[w];
+    conn.offset[p + 1] = conn.offset[p] + (searched[p] ? whole.offset[w + 1] - whole.offset[w] : 0);
   }
   conn.resizeRows(static_cast<std::size_t>(conn.offset.back()));
   for (LocalIndex p = 0; p < points.owned; ++p) {
+    if (!searched[p]) continue;
     const LocalIndex w = whole_point.find(points.id[p]);
     Index to = conn.offset[p];
     for (Index e = whole.offset[w]; e < whole.offset[w + 1]; ++e, ++to) {
@@ -223,7 +226,13 @@ void Integrator::advance(double dt) {
     if (settings_.debris_contact) {
       NodeStore& nodes = model_.nodes;
       const double dt_kick = 0.5 * (dt_last_ + dt);
-      if (distribution_) requireContactReach(dt_kick);
+      if (distribution_) {
+        requireContactReach(dt_kick);
+        // The contact weighs a struck node by its mass and velocity: a ghost node's owner holds all
+        // its points.
+        distribution_->refreshNodes(nodes.mass);
+        distribution_->refreshNodes(nodes.momentum);
+      }
       contact_.apply(model_,
                      Carriers{nodes.x, nodes.momentum, nodes.mass, nodes.body, nodes.force, nodes.owned,
                               distribution_ ? distribution_->ghostNodes() : std::span<const std::uint8_t>{}},
@@ -379,9 +388,12 @@ void Integrator::updatePoints() {
                                      points.dF[bad].determinant()));
       },
       kAnotherRank);
+  // A ghost node's means come from its owner, which holds all its points.
+  std::function<void(VolumePatch::NodeMeans&)> refresh_means;
+  if (distribution_) refresh_means = [&](VolumePatch::NodeMeans& means) { distribution_->refreshNodes(means); };
   stabilisation_energy_ +=
       patch_.apply(conn, model_.nodes.owned, settings_.volume_averaging, settings_.volume_stabilisation,
-                   settings_.volume_relaxation, dt_step_, points, j_point_, own);
+                   settings_.volume_relaxation, dt_step_, points, j_point_, own, refresh_means);
   // A ghost point near the edge of the halo moved with nodes it may not all hold, and averaged over
   // patches it may not all see: its owner's values replace what this rank got.
   if (distribution_) {

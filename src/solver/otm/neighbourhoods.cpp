@@ -250,11 +250,17 @@ Neighbourhoods::Pending Neighbourhoods::retryPoints(Model& model, const Share& s
   return pending;
 }
 
-bool Neighbourhoods::update(Model& model, const Share& share, const Share& node_share, double halo_radius) {
+bool Neighbourhoods::update(Model& model, const Share& share, const Share& node_share, double halo_radius,
+                            std::span<const std::uint8_t> searched) {
   NodeStore& nodes = model.nodes;
   PointStore& points = model.points;
   Connectivity& conn = model.connectivity;
   const LocalIndex np = points.owned;
+  KESSLER_VERIFY(searched.empty() || searched.size() == static_cast<std::size_t>(np),
+                 "{} points to search or not for {} points", searched.size(), np);
+  auto rowless = [&](LocalIndex p) {
+    return points.debris(p) || (!searched.empty() && !searched[static_cast<std::size_t>(p)]);
+  };
 
   Stopwatch watch;
   // Cells of the mean cut-off radius of the intact points: a query with a larger radius visits more
@@ -315,7 +321,7 @@ bool Neighbourhoods::update(Model& model, const Share& share, const Share& node_
       const LocalIndex end = std::min<LocalIndex>(np, (c + 1) * chunk);
       for (LocalIndex p = c * chunk; p < end; ++p) {
         // Debris has no row (solver/common/debris_contact.hpp); failed points search as intact ones.
-        if (points.debris(p)) {
+        if (rowless(p)) {
           s.node.clear();
           count_[p] = visible_[p] = 0;
         } else {
@@ -339,7 +345,7 @@ bool Neighbourhoods::update(Model& model, const Share& share, const Share& node_
     Stopwatch shape_watch;
 #pragma omp for schedule(dynamic, 256) nowait
     for (LocalIndex p = 0; p < np; ++p) {
-      if (points.debris(p)) continue;
+      if (rowless(p)) continue;
       const LocalIndex c = p / chunk;
       const Index first = conn.offset[p];
       const auto n = static_cast<std::size_t>(count_[p]);

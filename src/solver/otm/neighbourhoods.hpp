@@ -24,8 +24,10 @@ class Neighbourhoods {
   // distributed run (`share`, `node_share`: the rank's own points and nodes, and the ranks; collective), the cell sizes
   // are agreed by all ranks, only own points count and throw, and the bodies' contact records join every rank's; if any
   // own point's search went beyond `halo_radius` (what the halo holds), the model is left as it was (the multipliers
-  // restored, no point torn) and it returns false: search again with a halo of at least largestRadius().
-  bool update(Model& model, const Share& share = {}, const Share& node_share = {}, double halo_radius = 0.0);
+  // restored, no point torn) and it returns false: search again with a halo of at least largestRadius(). Points
+  // with a 0 in `searched` (if given: ghosts whose rows no own node needs) get no row, as debris.
+  bool update(Model& model, const Share& share = {}, const Share& node_share = {}, double halo_radius = 0.0,
+              std::span<const std::uint8_t> searched = {});
 
   // Time spent in the search and in the shape functions during the last update.
   double searchSeconds() const { return search_seconds_; }

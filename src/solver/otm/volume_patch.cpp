@@ -43,8 +43,8 @@ double VolumePatch::relax(PointStore& points, LocalIndex p, double alpha, double
 }
 
 double VolumePatch::apply(const Connectivity& conn, LocalIndex owned_nodes, bool averaging, double alpha,
-                          double relaxation, double dt, PointStore& points, std::vector<double>& j,
-                          const Share& share) {
+                          double relaxation, double dt, PointStore& points, std::vector<double>& j, const Share& share,
+                          const std::function<void(NodeMeans&)>& refresh_nodes) {
   work_.assign(static_cast<std::size_t>(points.owned), 0.0);
   defect_step_.assign(static_cast<std::size_t>(points.owned), 0.0);
   signal2_.assign(static_cast<std::size_t>(points.owned), 0.0);
@@ -75,6 +75,7 @@ double VolumePatch::apply(const Connectivity& conn, LocalIndex owned_nodes, bool
       node_[a] = m > 0.0 ? std::array<double, 2>{log_j / m, trace / m} : std::array<double, 2>{0.0, 0.0};
     }
   }
+  if (refresh_nodes) refresh_nodes(node_);
 #pragma omp parallel for schedule(static)
   for (LocalIndex p = 0; p < points.owned; ++p) {
     points.viscosity_limiter[p] = 0.0;

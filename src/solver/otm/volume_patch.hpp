@@ -13,6 +13,7 @@
 #include "solver/otm/connectivity.hpp"
 
 #include <array>
+#include <functional>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -30,8 +31,12 @@ class VolumePatch {
   // time constant of k wave transits of the point's spacing; the stored energy that frees is booked
   // as negative work (the compatible energy update gives it to the point as heat).
   // The work returned by it and closeStep() is summed over the points `share` counts.
+  // `refresh_nodes`, if given, replaces the nodes' means where this process cannot sum them (a
+  // distributed run's ghost nodes, whose points it does not all hold) before the points read them.
+  using NodeMeans = std::vector<std::array<double, 2>>;
   double apply(const Connectivity& conn, LocalIndex owned_nodes, bool averaging, double alpha, double relaxation,
-               double dt, PointStore& points, std::vector<double>& j, const Share& share = {});
+               double dt, PointStore& points, std::vector<double>& j, const Share& share = {},
+               const std::function<void(NodeMeans&)>& refresh_nodes = {});
   // The rest of the step's stabilisation work, with the pressure after the material update (the one
   // the next step's forces carry): apply() books the step's defect at the old pressure's half. With
   // the relaxation on, also the change of an intact point's stored energy that the update's new
@@ -65,7 +70,7 @@ class VolumePatch {
   // Per point, what the gathers read: m_p, m_p ln det(dF), m_p tr(dF - I) (zero for debris); per
   // node the mass-weighted means of the last two.
   std::vector<std::array<double, 3>> record_;
-  std::vector<std::array<double, 2>> node_;
+  NodeMeans node_;
   std::vector<double> work_;         // per point, the stabilisation's work of the step
   std::vector<double> defect_step_;  // per point, the step's growth of the volume defect
   std::vector<double> signal2_;      // per point, c^2 under which apply() booked the step's stored energy
