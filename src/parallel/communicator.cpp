@@ -161,22 +161,28 @@ std::vector<std::vector<std::byte>> Communicator::allGather(std::span<const std:
   return each;
 }
 
-std::vector<std::vector<std::byte>> Communicator::gather(std::span<const std::byte> mine) const {
-  if (!handle_) return {std::vector<std::byte>(mine.begin(), mine.end())};
-  std::vector<int> counts(static_cast<std::size_t>(size_)), offsets(counts.size());
+std::vector<std::vector<std::byte>> Communicator::gather(std::vector<std::byte> mine) const {
+  if (!handle_) return {std::move(mine)};
+  std::vector<int> counts(static_cast<std::size_t>(size_));
   const int own = count(mine.size());
   check(MPI_Gather(&own, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm(handle_)), "gathering of sizes");
-  std::size_t total = 0;
-  for (int r = 0; r < size_; ++r) {
-    offsets[r] = count(total);
-    total += static_cast<std::size_t>(counts[r]);
+  constexpr int tag = 8;
+  if (!root()) {
+    check(MPI_Send(mine.data(), own, MPI_BYTE, 0, tag, comm(handle_)), "sending to rank 0");
+    return {};
   }
-  std::vector<std::byte> all(std::max<std::size_t>(root() ? total : 0, 1));
-  check(MPI_Gatherv(mine.data(), own, MPI_BYTE, all.data(), counts.data(), offsets.data(), MPI_BYTE, 0, comm(handle_)),
-        "gathering to rank 0");
-  if (!root()) return {};
   std::vector<std::vector<std::byte>> each(static_cast<std::size_t>(size_));
-  for (int r = 0; r < size_; ++r) each[r].assign(all.begin() + offsets[r], all.begin() + offsets[r] + counts[r]);
+  std::vector<MPI_Request> requests;
+  for (int r = 1; r < size_; ++r) {
+    auto& buffer = each[static_cast<std::size_t>(r)];
+    buffer.resize(static_cast<std::size_t>(counts[static_cast<std::size_t>(r)]));
+    requests.emplace_back();
+    check(MPI_Irecv(buffer.data(), counts[static_cast<std::size_t>(r)], MPI_BYTE, r, tag, comm(handle_),
+                    &requests.back()),
+          "receiving on rank 0");
+  }
+  each[0] = std::move(mine);
+  check(MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE), "gathering to rank 0");
   return each;
 }
 
@@ -213,8 +219,8 @@ std::vector<std::vector<std::byte>> Communicator::allGather(std::span<const std:
   return {std::vector<std::byte>(mine.begin(), mine.end())};
 }
 
-std::vector<std::vector<std::byte>> Communicator::gather(std::span<const std::byte> mine) const {
-  return {std::vector<std::byte>(mine.begin(), mine.end())};
+std::vector<std::vector<std::byte>> Communicator::gather(std::vector<std::byte> mine) const {
+  return {std::move(mine)};
 }
 
 void Communicator::abort(int code) const {

@@ -63,8 +63,9 @@ class Communicator {
                     std::span<const int> from, std::vector<std::vector<std::byte>>& incoming) const;
   // Every rank's `mine`, in rank order, on every rank.
   std::vector<std::vector<std::byte>> allGather(std::span<const std::byte> mine) const;
-  // Every rank's `mine`, in rank order, on rank 0; nothing elsewhere.
-  std::vector<std::vector<std::byte>> gather(std::span<const std::byte> mine) const;
+  // Every rank's `mine`, in rank order, on rank 0 (its own moved, the others' received straight into
+  // their buffers: a gathered run's output is the largest message); nothing elsewhere.
+  std::vector<std::vector<std::byte>> gather(std::vector<std::byte> mine) const;
   // Ends every rank of the run with `code` (an error that the ranks did not all see: waiting for
   // the others would hang).
   [[noreturn]] void abort(int code) const;

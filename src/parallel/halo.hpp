@@ -15,7 +15,6 @@
 
 #include <algorithm>
 #include <cstring>
-#include <limits>
 #include <span>
 #include <vector>
 
@@ -118,15 +117,12 @@ void Halo::build(Store& store, const Partition& partition, std::span<const doubl
   }
   const std::vector<std::vector<std::byte>> incoming = comm.exchange(packEntries(store, send_));
 
-  // Each message: its entry count, then each array of its entries in fields() order.
+  // Each message: its entry count, then each array of its entries in fields() order. The ghosts
+  // take their places among the own entries, in id order.
   constexpr std::size_t header = sizeof(std::uint64_t);
-  std::vector<std::size_t> count(ranks, 0);
   const std::size_t entry_bytes = fieldBytes(store);
-  std::size_t id_at = 0, before = 0;  // bytes per entry of the arrays before the ids
-  Store::fields(store, [&](const char*, const auto& values, const auto&) {
-    if (static_cast<const void*>(&values) == static_cast<const void*>(&store.id)) id_at = before;
-    before += sizeof(typename std::remove_reference_t<decltype(values)>::value_type);
-  });
+  std::vector<PackedEntries> lists(ranks);
+  std::vector<std::size_t> count(ranks, 0);
   for (std::size_t r = 0; r < ranks; ++r) {
     std::uint64_t n = 0;
     KESSLER_VERIFY(incoming[r].size() >= header, "a message of {} bytes from rank {}", incoming[r].size(), r);
@@ -134,75 +130,22 @@ void Halo::build(Store& store, const Partition& partition, std::span<const doubl
     count[r] = static_cast<std::size_t>(n);
     KESSLER_VERIFY(incoming[r].size() == header + count[r] * entry_bytes,
                    "a message of {} bytes from rank {} for {} entries", incoming[r].size(), r, count[r]);
+    lists[r] = {incoming[r].data() + header, count[r]};
   }
-  auto incomingId = [&](std::size_t r, std::size_t k) {
-    Index id = 0;
-    std::memcpy(&id, incoming[r].data() + header + count[r] * id_at + k * sizeof(Index), sizeof id);
-    return id;
-  };
-
-  // The new store in id order, merged from the own entries and each rank's ghosts (each in id
-  // order): where each entry comes from, rank -1 for this rank's own.
-  struct From {
-    int rank;
-    std::size_t k;  // the own entry's index in the store, or the entry's place in rank's message
-  };
-  std::vector<From> from;
-  std::size_t total = own.size();
-  for (const std::size_t n : count) total += n;
-  from.reserve(total);
-  std::vector<std::size_t> next(ranks, 0);
-  std::size_t next_own = 0;
-  Index last = std::numeric_limits<Index>::min();
-  for (std::size_t i = 0; i < total; ++i) {
-    From best{-1, 0};
-    Index best_id = std::numeric_limits<Index>::max();
-    if (next_own < own.size()) {
-      best = {-1, static_cast<std::size_t>(own[next_own])};
-      best_id = store.id[own[next_own]];
-    }
-    for (std::size_t r = 0; r < ranks; ++r)
-      if (next[r] < count[r] && incomingId(r, next[r]) < best_id) {
-        best = {static_cast<int>(r), next[r]};
-        best_id = incomingId(r, next[r]);
-      }
-    KESSLER_VERIFY(i == 0 || best_id > last, "entry {} is held twice (own and a ghost, or from two ranks)", best_id);
-    last = best_id;
-    if (best.rank < 0)
-      ++next_own;
-    else
-      ++next[static_cast<std::size_t>(best.rank)];
-    from.push_back(best);
-  }
-
-  // Every array rewritten in that order, through the kept buffer.
-  before = 0;
-  Store::fields(store, [&](const char*, auto& values, const auto&) {
-    using T = typename std::remove_reference_t<decltype(values)>::value_type;
-    static_assert(bytewise<T>, "a store array must hold plain values to be merged through bytes");
-    scratch_.resize(total * sizeof(T));
-    for (std::size_t i = 0; i < total; ++i) {
-      const std::byte* source = from[i].rank < 0 ? reinterpret_cast<const std::byte*>(&values[from[i].k])
-                                                 : incoming[static_cast<std::size_t>(from[i].rank)].data() + header +
-                                                       count[static_cast<std::size_t>(from[i].rank)] * before +
-                                                       from[i].k * sizeof(T);
-      std::memcpy(scratch_.data() + i * sizeof(T), source, sizeof(T));
-    }
-    values.resize(total);
-    if (total > 0) std::memcpy(static_cast<void*>(values.data()), scratch_.data(), total * sizeof(T));
-    before += sizeof(T);
-  });
+  const std::size_t held = ghost_.empty() ? store.x.size() : ghost_.size();
+  const std::vector<MergeSource> from = mergeById(store, std::span<const LocalIndex>(own), lists, scratch_);
+  const std::size_t total = from.size();
 
   // Where each own entry went (for the lists of what this rank sends), and each ghost sits.
-  std::vector<LocalIndex> at(ghost_.empty() ? store.x.size() : ghost_.size(), -1);
+  std::vector<LocalIndex> at(held, -1);
   ghost_.assign(total, 0);
   slot_.assign(ranks, {});
   for (std::size_t r = 0; r < ranks; ++r) slot_[r].reserve(count[r]);
   for (std::size_t i = 0; i < total; ++i) {
-    if (from[i].rank < 0) {
+    if (from[i].list < 0) {
       at[from[i].k] = static_cast<LocalIndex>(i);
     } else {
-      slot_[static_cast<std::size_t>(from[i].rank)].push_back(static_cast<LocalIndex>(i));
+      slot_[static_cast<std::size_t>(from[i].list)].push_back(static_cast<LocalIndex>(i));
       ghost_[i] = 1;
     }
   }

@@ -6,6 +6,7 @@
 #include "particles/store_fields.hpp"
 
 #include <cstring>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -38,6 +39,79 @@ std::vector<std::size_t> unpackEntries(Store& store, const std::vector<std::vect
     KESSLER_VERIFY(end == buffers[r].size(), "a message of {} bytes from rank {} held {}", buffers[r].size(), r, end);
   }
   return counts;
+}
+
+// Entries packed by packFields: `count` of them from `bytes` on, their arrays one after another.
+struct PackedEntries {
+  const std::byte* bytes = nullptr;
+  std::size_t count = 0;
+};
+// Where an entry of a merge came from: the store's own entry k (list -1), or entry k of a packed list.
+struct MergeSource {
+  int list = -1;
+  std::size_t k = 0;
+};
+
+// Rewrites every array of `store` as its entries `kept` and the entries of each packed list, merged
+// by id (`kept`, and each list, must be in id order), through `scratch` (kept by the caller between
+// calls, as permuteFields'); returns where each entry came from. One pass over the arrays, where
+// appending, sorting and permuting would take three. An id met twice is an error.
+template <class Store>
+std::vector<MergeSource> mergeById(Store& store, std::span<const LocalIndex> kept, std::span<const PackedEntries> lists,
+                                   std::vector<std::byte>& scratch) {
+  std::size_t id_at = 0, before = 0;  // bytes per entry of the arrays before the ids
+  Store::fields(store, [&](const char*, const auto& values, const auto&) {
+    if (static_cast<const void*>(&values) == static_cast<const void*>(&store.id)) id_at = before;
+    before += sizeof(typename std::remove_reference_t<decltype(values)>::value_type);
+  });
+  auto listId = [&](std::size_t l, std::size_t k) {
+    Index id = 0;
+    std::memcpy(&id, lists[l].bytes + lists[l].count * id_at + k * sizeof(Index), sizeof id);
+    return id;
+  };
+  std::size_t total = kept.size();
+  for (const PackedEntries& list : lists) total += list.count;
+  std::vector<MergeSource> from;
+  from.reserve(total);
+  std::vector<std::size_t> next(lists.size(), 0);
+  std::size_t next_kept = 0;
+  Index last = 0;
+  for (std::size_t i = 0; i < total; ++i) {
+    MergeSource best;
+    Index best_id = std::numeric_limits<Index>::max();
+    if (next_kept < kept.size()) {
+      best = {-1, static_cast<std::size_t>(kept[next_kept])};
+      best_id = store.id[kept[next_kept]];
+    }
+    for (std::size_t l = 0; l < lists.size(); ++l)
+      if (next[l] < lists[l].count && listId(l, next[l]) < best_id) {
+        best = {static_cast<int>(l), next[l]};
+        best_id = listId(l, next[l]);
+      }
+    KESSLER_VERIFY(i == 0 || best_id > last, "entry {} met twice in a merge (or a list out of id order)", best_id);
+    last = best_id;
+    ++(best.list < 0 ? next_kept : next[static_cast<std::size_t>(best.list)]);
+    from.push_back(best);
+  }
+  before = 0;
+  Store::fields(store, [&](const char*, auto& values, const auto&) {
+    using T = typename std::remove_reference_t<decltype(values)>::value_type;
+    static_assert(bytewise<T>, "a store array must hold plain values to be merged through bytes");
+    scratch.resize(total * sizeof(T));
+    for (std::size_t i = 0; i < total; ++i) {
+      const MergeSource& f = from[i];
+      const std::byte* source = f.list < 0
+                                    ? reinterpret_cast<const std::byte*>(&values[f.k])
+                                    : lists[static_cast<std::size_t>(f.list)].bytes +
+                                          lists[static_cast<std::size_t>(f.list)].count * before + f.k * sizeof(T);
+      std::memcpy(scratch.data() + i * sizeof(T), source, sizeof(T));
+    }
+    values.resize(total);
+    if (total > 0) std::memcpy(static_cast<void*>(values.data()), scratch.data(), total * sizeof(T));
+    before += sizeof(T);
+  });
+  store.owned = static_cast<LocalIndex>(total);
+  return from;
 }
 
 template <class Store>

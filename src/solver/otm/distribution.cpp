@@ -182,9 +182,9 @@ std::optional<Model> Distribution::gather(const Model& model, bool rows) const {
       for (Index e = conn.offset[p]; e < conn.offset[p + 1]; ++e) put(conn.dN[e]);
     }
   }
-  const auto points_in = comm_.gather(point_bytes);
-  const auto nodes_in = comm_.gather(node_bytes);
-  const auto rows_in = comm_.gather(row_bytes);
+  const auto points_in = comm_.gather(std::move(point_bytes));
+  const auto nodes_in = comm_.gather(std::move(node_bytes));
+  const auto rows_in = comm_.gather(std::move(row_bytes));
   if (!comm_.root()) return std::nullopt;
 
   Model whole;
@@ -195,23 +195,20 @@ std::optional<Model> Distribution::gather(const Model& model, bool rows) const {
   std::vector<Vec3> whole_lambda;
   std::vector<double> whole_rate;
   TravellingPoints all(whole.points, whole_lambda, whole_rate);
-  const std::size_t point_entry = rows ? fieldBytes(all) : fieldBytes(whole.points);
-  for (std::size_t r = 0; r < points_in.size(); ++r) {
-    if (rows)
-      unpackFields(all, points_in[r], 0, points_in[r].size() / point_entry);
-    else
-      unpackFields(whole.points, points_in[r], 0, points_in[r].size() / point_entry);
-    unpackFields(whole.nodes, nodes_in[r], 0, nodes_in[r].size() / fieldBytes(whole.nodes));
-  }
-  whole.points.owned = whole.points.size();
-  whole.nodes.owned = whole.nodes.size();
-  // Everything in id order, the rows with node indices.
-  const std::vector<LocalIndex> point_order = idOrder(whole.points);
-  if (rows)
-    permuteFields(all, point_order);
-  else
-    permuteFields(whole.points, point_order);
-  permuteFields(whole.nodes, idOrder(whole.nodes));
+  // Every rank's own entries, each in id order, merged by id; the rows with node indices.
+  auto packed = [](const std::vector<std::vector<std::byte>>& in, std::size_t bytes_each) {
+    std::vector<parallel::PackedEntries> lists;
+    for (const std::vector<std::byte>& bytes : in) {
+      KESSLER_VERIFY(bytes.size() % bytes_each == 0, "gathering: a message of {} bytes", bytes.size());
+      lists.push_back({bytes.data(), bytes.size() / bytes_each});
+    }
+    return lists;
+  };
+  std::vector<std::byte> scratch;
+  const std::vector<parallel::MergeSource> point_from =
+      rows ? parallel::mergeById(all, {}, packed(points_in, fieldBytes(all)), scratch)
+           : parallel::mergeById(whole.points, {}, packed(points_in, fieldBytes(whole.points)), scratch);
+  parallel::mergeById(whole.nodes, {}, packed(nodes_in, fieldBytes(whole.nodes)), scratch);
   whole.lme_lambda = rows ? std::move(whole_lambda) : std::vector<Vec3>(whole.points.x.size(), Vec3::Zero());
   if (!rows) return whole;
 
@@ -220,27 +217,33 @@ std::optional<Model> Distribution::gather(const Model& model, bool rows) const {
     const std::byte* at = nullptr;
     std::int64_t length = 0;
   };
-  std::vector<Row> arrived;
-  arrived.reserve(whole.points.x.size());
-  for (const std::vector<std::byte>& bytes : rows_in)
+  std::vector<std::vector<Row>> arrived(rows_in.size());  // per rank
+  for (std::size_t r = 0; r < rows_in.size(); ++r) {
+    const std::vector<std::byte>& bytes = rows_in[r];
     for (const std::byte* at = bytes.data(); at < bytes.data() + bytes.size();) {
       Row row;
       std::memcpy(&row.length, at, sizeof row.length);
       row.at = at + sizeof row.length;
       at = row.at + static_cast<std::size_t>(row.length) * entry_bytes;
       KESSLER_VERIFY(at <= bytes.data() + bytes.size(), "gathering rows: a message of {} bytes", bytes.size());
-      arrived.push_back(row);
+      arrived[r].push_back(row);
     }
-  KESSLER_VERIFY(arrived.size() == whole.points.x.size(), "gathered {} rows for {} points", arrived.size(),
-                 whole.points.x.size());
+  }
+  auto rowOf = [&](std::size_t i) -> const Row& {
+    const parallel::MergeSource& f = point_from[i];
+    KESSLER_VERIFY(f.list >= 0 && f.k < arrived[static_cast<std::size_t>(f.list)].size(),
+                   "gathering rows: no row for point {}", whole.points.id[i]);
+    return arrived[static_cast<std::size_t>(f.list)][f.k];
+  };
   const IdIndex node_index(whole.nodes.id);
   Connectivity& out = whole.connectivity;
-  out.offset.assign(arrived.size() + 1, 0);
-  for (std::size_t i = 0; i < arrived.size(); ++i)
-    out.offset[i + 1] = out.offset[i] + static_cast<Index>(arrived[static_cast<std::size_t>(point_order[i])].length);
+  const std::size_t whole_points = point_from.size();
+  out.offset.assign(whole_points + 1, 0);
+  for (std::size_t i = 0; i < whole_points; ++i)
+    out.offset[i + 1] = out.offset[i] + static_cast<Index>(rowOf(i).length);
   out.resizeRows(static_cast<std::size_t>(out.offset.back()));
-  for (std::size_t i = 0; i < arrived.size(); ++i) {
-    const Row& row = arrived[static_cast<std::size_t>(point_order[i])];
+  for (std::size_t i = 0; i < whole_points; ++i) {
+    const Row& row = rowOf(i);
     const auto n = static_cast<std::size_t>(row.length);
     const auto e = static_cast<std::size_t>(out.offset[i]);
     const std::byte* ids = row.at;
