@@ -43,7 +43,8 @@ class Distribution {
   // multipliers and no connectivity without). Collective.
   std::optional<Model> gather(const Model& model, bool rows) const;
 
-  // The largest rank's own points over the mean, at the last rebuild; and the largest so far.
+  // The largest rank's work over the mean at the last rebuild (its own points, each weighted by the
+  // entries of its row and a share for the point itself: ownWork), and the largest so far.
   double imbalance() const { return imbalance_; }
   double largestImbalance() const { return largest_imbalance_; }
   // How many times the points were cut afresh because the imbalance passed `rebalance_at`.
@@ -80,9 +81,13 @@ class Distribution {
 
  private:
   const parallel::Communicator& comm_;
+  // Each own point's work in the last step, in row entries (for the balance).
+  std::vector<double> ownWork(const Model& model) const;
+
   parallel::Partition partition_;
   parallel::Halo points_, nodes_;
   double imbalance_ = 1.0, largest_imbalance_ = 1.0;
+  double cut_balance_ = 1.0;  // the imbalance the last cut left, by the work it was given
   LocalIndex own_points_ = 0;
   int rebalances_ = 0;
   std::vector<std::uint8_t> searched_;
