@@ -30,19 +30,21 @@ double stiffness(double h_a, double modulus_a, double h_b, double modulus_b) {
 
 }  // namespace
 
+bool mayStrike(const PointStore& points, LocalIndex p, std::size_t bodies) {
+  if (!points.debris(p) || bodies > max_contact_bodies) return false;
+  const std::uint64_t every_body =
+      bodies == max_contact_bodies ? ~std::uint64_t{0} : (bodyBit(static_cast<int>(bodies)) - 1);
+  const auto passes = static_cast<std::uint64_t>(points.passes_through[p]);
+  return passes != 0 && (passes & every_body) != every_body;
+}
+
 void DebrisContact::apply(ParticleState& model, const Carriers& nodes, double dt_kick, const Share& share) {
   PointStore& points = model.points;
   stored_ = 0.0;
   step_bound_ = std::numeric_limits<double>::infinity();
   const std::size_t bodies = model.bodies.size();
   if (bodies > max_contact_bodies) return;
-  const std::uint64_t every_body =
-      bodies == max_contact_bodies ? ~std::uint64_t{0} : (bodyBit(static_cast<int>(bodies)) - 1);
-  // Debris in flight that some body may stop (passes_through is 0 until markNewDebris).
-  auto flying = [&](LocalIndex p) {
-    const auto passes = static_cast<std::uint64_t>(points.passes_through[p]);
-    return points.debris(p) && passes != 0 && (passes & every_body) != every_body;
-  };
+  auto flying = [&](LocalIndex p) { return mayStrike(points, p, bodies); };
   bool any = false;
   for (LocalIndex p = 0; p < points.owned && !any; ++p) any = share.own(p) && flying(p);
   if (!share.any(any)) return;
@@ -138,6 +140,8 @@ void DebrisContact::apply(ParticleState& model, const Carriers& nodes, double dt
     });
     if (pairs_.size() > begin) strikes_.push_back(Strike{d, begin, pairs_.size()});
   }
+  // A ghost carrier's pairs with debris this rank does not hold are counted by its owner.
+  if (nodes.refresh_pairs) nodes.refresh_pairs(node_pairs_);
   // Each pair's force from the approach speed u' it leaves after the kick. Spring and dashpot act
   // on the state at the end of the step (implicit, u' = u - (k (overlap + u' dt) + c u') dt / m), so
   // that no step, however long, lets the pair overshoot, with each pair stopping a share m / n of its
@@ -159,6 +163,7 @@ void DebrisContact::apply(ParticleState& model, const Carriers& nodes, double dt
       node_dv_[static_cast<std::size_t>(pair.node)] -= (dt_kick * pair.force / nodes.mass[pair.node]) * pair.n;
     }
   }
+  if (nodes.refresh_kicks) nodes.refresh_kicks(node_dv_);
   // The heat: the work the kick takes from each pair's relative motion (the force times the approach
   // speed at the middle of the kick, from the kicks of all the pairs of the debris point and of the
   // node) less what the spring stores by the end of the step, where the overlap will be
@@ -179,6 +184,10 @@ void DebrisContact::apply(ParticleState& model, const Carriers& nodes, double dt
     points.v[d] += strike.dv;
     points.energy[d] += heat / points.mass[d];
     points.strike(d, nodes.body[pairs.front().node]);
+  }
+  if (nodes.refresh_pairs || nodes.refresh_kicks) {  // ghosts' owners may have set any carrier's
+    std::fill(node_pairs_.begin(), node_pairs_.end(), 0);
+    std::fill(node_dv_.begin(), node_dv_.end(), Vec3::Zero());
   }
   for (const Pair& pair : pairs_) {
     node_pairs_[static_cast<std::size_t>(pair.node)] = 0;

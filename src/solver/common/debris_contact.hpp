@@ -18,6 +18,7 @@
 #include "solver/common/particle_state.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <span>
 #include <vector>
@@ -33,7 +34,16 @@ struct Carriers {
   std::span<Vec3> force;                // the contact forces are added to these
   LocalIndex owned = 0;                 // how many there are
   std::span<const std::uint8_t> ghost;  // per carrier, 1 for a distributed run's ghost; empty: none
+  // A distributed run's: a ghost carrier's count of pairs and kick from its owner, which holds all
+  // the debris that strikes it (collective). Empty on one process.
+  std::function<void(std::vector<int>&)> refresh_pairs;
+  std::function<void(std::vector<Vec3>&)> refresh_kicks;
 };
+
+// Debris in flight that some body of the `bodies` may stop: it passes through its own body and those
+// it touched when released (passes_through, 0 until markNewDebris), and strikes the others. Debris
+// that passes through every body never strikes anything.
+bool mayStrike(const PointStore& points, LocalIndex p, std::size_t bodies);
 
 class DebrisContact {
  public:

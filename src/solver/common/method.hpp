@@ -53,7 +53,8 @@ class Method {
   // The method's own node cloud, written to nodes.xdmf beside the points (empty for a method
   // without nodes).
   virtual NodeCloud nodes() const = 0;
-  // Figures of the problem's size beyond points and nodes, for summary.json (OTM: mean_neighbours).
+  // Figures of the problem's size beyond points and nodes, for summary.json (OTM: mean_neighbours);
+  // collective on a distributed method (every rank calls it).
   virtual std::vector<std::pair<std::string, double>> sizes() const = 0;
   // Lines for the end-of-run report (OTM: points torn from their bodies); none if nothing to say.
   virtual std::vector<std::string> notes() const = 0;

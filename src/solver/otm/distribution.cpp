@@ -2,6 +2,7 @@
 
 #include "parallel/migrate.hpp"
 #include "particles/store_fields.hpp"
+#include "solver/common/debris_contact.hpp"
 
 #include <algorithm>
 #include <cstring>
@@ -139,19 +140,20 @@ void Distribution::rebuild(Model& model, std::vector<double>& volume_rate, doubl
   const std::vector<LocalIndex> own_points = points_.ownEntries(points);
   own_points_ = static_cast<LocalIndex>(own_points.size());
 
-  double ball = 0.0;  // the largest erosion ball
-  for (const LocalIndex p : own_points) ball = std::max(ball, erosion_radius * points.spacing(p));
+  double ball = 0.0;  // the largest erosion ball (of the intact points, which alone erode and fill balls)
+  for (const LocalIndex p : own_points)
+    if (!points.broken[p]) ball = std::max(ball, erosion_radius * points.spacing(p));
   ball = comm_.max(ball);
   // Points: a rank's own nodes gather from every point whose support holds them (one radius), and
-  // the erosion of an own point reads its ball; debris also strikes an own node, or a node an own
-  // debris point strikes, whose share of the strike counts its other debris (two contact reaches).
-  // (The volume averaging of an own point reads the means of its nodes, which their owners send.)
-  // Nodes: those of the rows of the points searched (two radii), and those an own debris point may
-  // strike.
+  // the erosion of an own point reads its ball; debris has no row, and strikes an own node (one
+  // contact reach) if it may strike anything. (The volume averaging of an own point reads the means of its nodes, and
+  // debris contact a node's count of strikes and their kick, which their owners send.) Nodes: those of the rows of the
+  // points searched (two radii), and those an own debris point may strike.
   std::vector<double> point_reach(own_points.size());
   for (std::size_t k = 0; k < own_points.size(); ++k)
-    point_reach[k] =
-        points.debris(own_points[k]) ? std::max({support, ball, 2.0 * contact_reach}) : std::max(support, ball);
+    point_reach[k] = points.debris(own_points[k])
+                         ? (mayStrike(points, own_points[k], model.bodies.size()) ? contact_reach : 0.0)
+                         : (points.broken[own_points[k]] ? support : std::max(support, ball));
   const std::vector<double> node_reach(static_cast<std::size_t>(nodes.size() - nodes_.ghosts()),
                                        std::max(2.0 * support, contact_reach));
   points_.build(travelling, partition_, point_reach, comm_);

@@ -233,10 +233,13 @@ void Integrator::advance(double dt) {
         distribution_->refreshNodes(nodes.mass);
         distribution_->refreshNodes(nodes.momentum);
       }
-      contact_.apply(model_,
-                     Carriers{nodes.x, nodes.momentum, nodes.mass, nodes.body, nodes.force, nodes.owned,
-                              distribution_ ? distribution_->ghostNodes() : std::span<const std::uint8_t>{}},
-                     dt_kick, share());
+      Carriers carriers{nodes.x, nodes.momentum, nodes.mass, nodes.body, nodes.force, nodes.owned, {}, {}, {}};
+      if (distribution_) {
+        carriers.ghost = distribution_->ghostNodes();
+        carriers.refresh_pairs = [&](std::vector<int>& pairs) { distribution_->refreshNodes(pairs); };
+        carriers.refresh_kicks = [&](std::vector<Vec3>& kicks) { distribution_->refreshNodes(kicks); };
+      }
+      contact_.apply(model_, carriers, dt_kick, share());
     }
   }
   {

@@ -97,9 +97,20 @@ Clock OtmMethod::clock() const {
 
 std::vector<std::pair<std::string, double>> OtmMethod::sizes() const {
   if (report_) return report_->sizes;
-  const double points = model_.points.owned;
+  // The mean neighbours of the whole run: a distributed run's own points on every rank (its ghosts
+  // hold rows or not as the halo needs).
+  std::int64_t counts[2] = {0, 0};  // entries, points
+  const std::span<const std::uint8_t> ghost =
+      distribution_ ? distribution_->ghostPoints() : std::span<const std::uint8_t>{};
+  const Connectivity& conn = model_.connectivity;
+  for (LocalIndex p = 0; p < model_.points.owned; ++p)
+    if (ghost.empty() || !ghost[static_cast<std::size_t>(p)]) {
+      counts[0] += conn.offset.empty() ? 0 : conn.offset[p + 1] - conn.offset[p];
+      ++counts[1];
+    }
+  if (distribution_) distribution_->comm().sum(counts);
   std::vector<std::pair<std::string, double>> sizes{
-      {"mean_neighbours", points > 0 ? static_cast<double>(model_.connectivity.node.size()) / points : 0.0}};
+      {"mean_neighbours", counts[1] > 0 ? static_cast<double>(counts[0]) / static_cast<double>(counts[1]) : 0.0}};
   const std::vector<std::pair<std::string, double>> ranks = rankSizes();
   sizes.insert(sizes.end(), ranks.begin(), ranks.end());
   return sizes;
@@ -138,23 +149,12 @@ std::unique_ptr<Method> OtmMethod::gathered(bool for_checkpoint) const {
   ExactSum torn_mass;
   torn_mass.add(integrator_.tornMass());
   const double mass = comm.sum(torn_mass);
-  // The mean neighbours of the whole run (a gathered method without its connectivity has none).
-  std::int64_t counts[2] = {0, 0};
-  const std::span<const std::uint8_t> ghost = distribution_->ghostPoints();
-  const Connectivity& conn = model_.connectivity;
-  for (LocalIndex p = 0; p < model_.points.owned; ++p)
-    if (ghost.empty() || !ghost[static_cast<std::size_t>(p)]) {
-      counts[0] += conn.offset.empty() ? 0 : conn.offset[p + 1] - conn.offset[p];
-      ++counts[1];
-    }
-  comm.sum(counts);
+  // (A gathered method without its connectivity has no neighbours of its own: they are counted here.)
+  std::vector<std::pair<std::string, double>> sizes = this->sizes();
   std::optional<Model> whole = distribution_->gather(model_, for_checkpoint);
   if (!whole) return nullptr;
   auto method = std::make_unique<OtmMethod>(std::move(*whole), integrator_.settings());
   method->integrator_.restore(integrator_.state());
-  std::vector<std::pair<std::string, double>> sizes{
-      {"mean_neighbours", counts[1] > 0 ? static_cast<double>(counts[0]) / static_cast<double>(counts[1]) : 0.0}};
-  for (const auto& size : rankSizes()) sizes.push_back(size);
   method->report_ = Report{integrator_.timers(), std::move(sizes), tornNotes(static_cast<LocalIndex>(torn), mass)};
   return method;
 }
