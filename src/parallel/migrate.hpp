@@ -93,18 +93,32 @@ std::vector<MergeSource> mergeById(Store& store, std::span<const LocalIndex> kep
     ++(best.list < 0 ? next_kept : next[static_cast<std::size_t>(best.list)]);
     from.push_back(best);
   }
+  // Runs of entries that come one after another from one source (a rank's part of space holds
+  // runs of consecutive ids), each copied at once.
+  struct Run {
+    int list;
+    std::size_t k, count;
+  };
+  std::vector<Run> runs;
+  for (const MergeSource& f : from) {
+    if (!runs.empty() && runs.back().list == f.list && runs.back().k + runs.back().count == f.k)
+      ++runs.back().count;
+    else
+      runs.push_back({f.list, f.k, 1});
+  }
   before = 0;
   Store::fields(store, [&](const char*, auto& values, const auto&) {
     using T = typename std::remove_reference_t<decltype(values)>::value_type;
     static_assert(bytewise<T>, "a store array must hold plain values to be merged through bytes");
     scratch.resize(total * sizeof(T));
-    for (std::size_t i = 0; i < total; ++i) {
-      const MergeSource& f = from[i];
-      const std::byte* source = f.list < 0
-                                    ? reinterpret_cast<const std::byte*>(&values[f.k])
-                                    : lists[static_cast<std::size_t>(f.list)].bytes +
-                                          lists[static_cast<std::size_t>(f.list)].count * before + f.k * sizeof(T);
-      std::memcpy(scratch.data() + i * sizeof(T), source, sizeof(T));
+    std::byte* to = scratch.data();
+    for (const Run& run : runs) {
+      const std::byte* source = run.list < 0
+                                    ? reinterpret_cast<const std::byte*>(values.data() + run.k)
+                                    : lists[static_cast<std::size_t>(run.list)].bytes +
+                                          lists[static_cast<std::size_t>(run.list)].count * before + run.k * sizeof(T);
+      std::memcpy(to, source, run.count * sizeof(T));
+      to += run.count * sizeof(T);
     }
     values.resize(total);
     if (total > 0) std::memcpy(static_cast<void*>(values.data()), scratch.data(), total * sizeof(T));
