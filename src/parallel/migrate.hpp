@@ -54,8 +54,8 @@ struct MergeSource {
 
 // Rewrites every array of `store` as its entries `kept` and the entries of each packed list, merged
 // by id (`kept`, and each list, must be in id order), through `scratch` (kept by the caller between
-// calls, as permuteFields'); returns where each entry came from. One pass over the arrays, where
-// appending, sorting and permuting would take three. An id met twice is an error.
+// calls, so that a merge every step allocates nothing); returns where each entry came from. One pass over the arrays,
+// where appending, sorting and permuting would take three. An id met twice is an error.
 template <class Store>
 std::vector<MergeSource> mergeById(Store& store, std::span<const LocalIndex> kept, std::span<const PackedEntries> lists,
                                    std::vector<std::byte>& scratch) {

@@ -136,23 +136,4 @@ std::size_t unpackFieldsInto(Store& store, std::span<const std::byte> buffer, st
   return offset;
 }
 
-// permuteFields through `scratch`, kept by the caller between calls: a store reordered every step
-// (a distributed run's halo) then allocates nothing, and its pages are not faulted in afresh.
-template <class Store>
-void permuteFields(Store& store, const std::vector<LocalIndex>& order, std::vector<std::byte>& scratch) {
-  KESSLER_VERIFY(order.size() == store.x.size(), "permutation of {} entries for {} particles", order.size(),
-                 store.x.size());
-  Store::fields(store, [&](const char* name, auto& values, const auto&) {
-    using T = typename std::remove_reference_t<decltype(values)>::value_type;
-    static_assert(bytewise<T>, "a store array must hold plain values to be permuted through bytes");
-    KESSLER_VERIFY(values.size() == order.size(), "permutation of {} entries for '{}', which holds {}", order.size(),
-                   name, values.size());
-    scratch.resize(values.size() * sizeof(T));
-    if (!values.empty()) std::memcpy(scratch.data(), static_cast<const void*>(values.data()), scratch.size());
-    for (std::size_t i = 0; i < order.size(); ++i)
-      std::memcpy(static_cast<void*>(&values[i]), scratch.data() + static_cast<std::size_t>(order[i]) * sizeof(T),
-                  sizeof(T));
-  });
-}
-
 }  // namespace kessler

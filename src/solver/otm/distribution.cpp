@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <numeric>
 #include <type_traits>
 
 namespace kessler::otm {
@@ -75,10 +76,9 @@ void Distribution::split(Model& model) {
 // A point's cost in a step, in row entries: its search, shape functions, assembly and point update
 // go by the entries of its row (about 0.065 us each on hvi-100k), its material update, erosion and
 // time step by the point (about 0.6 us, some 9 entries). Debris has no row.
-std::vector<double> Distribution::ownWork(const Model& model) const {
+std::vector<double> Distribution::ownWork(const Model& model, const std::vector<LocalIndex>& own) const {
   constexpr double entries_per_point = 9.0;
   const Connectivity& conn = model.connectivity;
-  const std::vector<LocalIndex> own = points_.ownEntries(model.points);
   std::vector<double> work(own.size(), entries_per_point);
   // Before the first search (and after a restart's split) there are no rows: every point alike.
   if (conn.points() != model.points.owned) return work;
@@ -99,13 +99,9 @@ void Distribution::rebuild(Model& model, std::vector<double>& volume_rate, doubl
   // now, each weighted by its work in the last step. Entries that left their subdomain move to its
   // owner. Either way the ghosts go first; most steps neither happens, and the halos' build replaces
   // the ghosts in place.
-  const std::vector<double> work = ownWork(model);
-  std::int64_t sums[2] = {0, 0};  // this rank's work and the whole run's, exact
-  for (const double w : work) sums[0] += static_cast<std::int64_t>(w);
-  sums[1] = sums[0];
-  const double mine = static_cast<double>(sums[0]);
-  comm_.sum(std::span<std::int64_t>(sums + 1, 1));
-  imbalance_ = comm_.max(mine) / std::max(static_cast<double>(sums[1]) / comm_.size(), 1.0);
+  const std::vector<LocalIndex> own = points_.ownEntries(points);
+  const std::vector<double> work = ownWork(model, own);
+  imbalance_ = parallel::imbalance(comm_, std::accumulate(work.begin(), work.end(), 0.0));  // exact: integers
   largest_imbalance_ = std::max(largest_imbalance_, imbalance_);
   // A cut can only part a plate between its layers of points, so the balance it reaches may be no
   // better than the one it replaces: the points are cut afresh once the imbalance passes both
@@ -114,7 +110,7 @@ void Distribution::rebuild(Model& model, std::vector<double>& volume_rate, doubl
   std::vector<int> point_owner, node_owner;
   bool leaving = false;
   if (!rebalance) {
-    point_owner = owners(points, points_.ownEntries(points), partition_);
+    point_owner = owners(points, own, partition_);
     node_owner = owners(nodes, nodes_.ownEntries(nodes), partition_);
     for (const std::vector<int>* owner : {&point_owner, &node_owner})
       leaving = leaving || std::any_of(owner->begin(), owner->end(), [&](int r) { return r != comm_.rank(); });
@@ -126,12 +122,12 @@ void Distribution::rebuild(Model& model, std::vector<double>& volume_rate, doubl
       partition_.balance(points.x, points.id, work);  // the own points, in the same order
       ++rebalances_;
       point_owner = owners(points, points_.ownEntries(points), partition_);
-      std::vector<std::int64_t> rank_work(static_cast<std::size_t>(comm_.size()), 0);
+      // The balance the cut reached: the work it gives each rank (exact integer sums).
+      std::vector<std::int64_t> given(static_cast<std::size_t>(comm_.size()), 0);
       for (std::size_t k = 0; k < work.size(); ++k)
-        rank_work[static_cast<std::size_t>(point_owner[k])] += static_cast<std::int64_t>(work[k]);
-      comm_.sum(rank_work);
-      const std::int64_t largest = *std::max_element(rank_work.begin(), rank_work.end());
-      cut_balance_ = static_cast<double>(largest) / std::max(static_cast<double>(sums[1]) / comm_.size(), 1.0);
+        given[static_cast<std::size_t>(point_owner[k])] += static_cast<std::int64_t>(work[k]);
+      comm_.sum(given);
+      cut_balance_ = parallel::imbalance(comm_, static_cast<double>(given[static_cast<std::size_t>(comm_.rank())]));
       node_owner = owners(nodes, nodes_.ownEntries(nodes), partition_);
     }
     parallel::migrate(travelling, point_owner, comm_);

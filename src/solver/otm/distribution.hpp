@@ -81,8 +81,8 @@ class Distribution {
 
  private:
   const parallel::Communicator& comm_;
-  // Each own point's work in the last step, in row entries (for the balance).
-  std::vector<double> ownWork(const Model& model) const;
+  // Each of the own points' (`own`, in order) work in the last step, in row entries (for the balance).
+  std::vector<double> ownWork(const Model& model, const std::vector<LocalIndex>& own) const;
 
   parallel::Partition partition_;
   parallel::Halo points_, nodes_;

@@ -178,15 +178,16 @@ void Integrator::distributeRestored() {
   const IdIndex whole_point(point_ids), node_at(nodes.id);
   const std::span<const std::uint8_t> searched = distribution_->searched();
   Connectivity& conn = model_.connectivity;
+  std::vector<LocalIndex> at_whole(static_cast<std::size_t>(points.owned));
   conn.offset.assign(static_cast<std::size_t>(points.owned) + 1, 0);
   for (LocalIndex p = 0; p < points.owned; ++p) {
-    const LocalIndex w = whole_point.find(points.id[p]);
+    const LocalIndex w = at_whole[p] = whole_point.find(points.id[p]);
     conn.offset[p + 1] = conn.offset[p] + (searched[p] ? whole.offset[w + 1] - whole.offset[w] : 0);
   }
   conn.resizeRows(static_cast<std::size_t>(conn.offset.back()));
   for (LocalIndex p = 0; p < points.owned; ++p) {
     if (!searched[p]) continue;
-    const LocalIndex w = whole_point.find(points.id[p]);
+    const LocalIndex w = at_whole[p];
     Index to = conn.offset[p];
     for (Index e = whole.offset[w]; e < whole.offset[w + 1]; ++e, ++to) {
       const Index id = node_ids[static_cast<std::size_t>(whole.node[e])];
