@@ -4,8 +4,11 @@
 // x_i +- reach_i (reach: the largest distance at which anything of the other rank can need it, a
 // support radius or an erosion ball). build() sends those entries whole and merges them among the
 // store's own entries in id order, so that the store holds its part of the whole in the whole's
-// order (docs/parallel.md, "One order on every rank"); ghost(i) tells them apart. build() again
-// replaces the ghosts of the last build with those needed now, in one pass over the store. refresh()
+// order (docs/parallel.md, "One order on every rank"); ghost(i) tells them apart. A build sends
+// entries out to a reach and a skin, so that the ghosts it leaves stay enough while entries move:
+// build() again keeps them in their slots and sends their values afresh while every entry needed
+// now is among them, and otherwise replaces them with those needed now, in one pass over the
+// store. Ghosts beyond the need are held, never used: no result depends on them. refresh()
 // later sends only chosen arrays again, into the same slots, in messages between neighbouring ranks
 // alone. After build() every entry counts as the store's (`owned` is its size): a method computes
 // ghosts too, and their owners' values replace what it got wrong.
@@ -26,11 +29,18 @@ class Halo {
   // migration.
   template <class Store>
   void dropGhosts(Store& store);
-  // Finds and fetches the ghosts the store's own entries need now, and puts them among the own
-  // entries in id order, in place of the ghosts of the last build (if any). The own entries must be
-  // in id order (as migrate() leaves them); reach[k] for the k-th own entry. Collective.
+  // Finds and fetches the ghosts the store's own entries need now (reach[k] for the k-th own
+  // entry). Where the last build's ghosts hold them all, on every rank, they stay in their slots and
+  // take their owners' values afresh; otherwise the entries within the reach and its skin are put
+  // among the own entries in id order, in place of the last build's. The own entries must be in id
+  // order (as migrate() leaves them). Collective.
   template <class Store>
   void build(Store& store, const Partition& partition, std::span<const double> reach, const Communicator& comm);
+  // A build's margin: entries are sent out to (1 + skin) times their reach.
+  static constexpr double skin = 0.25;
+  // Builds that fetched ghosts afresh, and builds that kept them.
+  long fetches() const { return fetches_; }
+  long keeps() const { return keeps_; }
   // The own entries of the store, in order (all of them before the first build).
   template <class Store>
   std::vector<LocalIndex> ownEntries(const Store& store) const;
@@ -70,10 +80,13 @@ class Halo {
   std::vector<std::uint8_t> ghost_;            // per entry of the store
   std::vector<std::byte> scratch_;             // build()'s reordering, kept between builds
   LocalIndex ghosts_ = 0;
+  bool built_ = false;  // since the last dropGhosts()
+  long fetches_ = 0, keeps_ = 0;
 };
 
 template <class Store>
 void Halo::dropGhosts(Store& store) {
+  built_ = false;  // entries move after this: the next build fetches
   if (ghosts_ == 0) return;
   KESSLER_VERIFY(ghost_.size() == store.x.size(), "dropping the ghosts of another store");
   std::vector<LocalIndex> own;
@@ -108,13 +121,31 @@ void Halo::build(Store& store, const Partition& partition, std::span<const doubl
     KESSLER_VERIFY(store.id[own[k - 1]] < store.id[own[k]], "a halo built on a store out of id order (entry {})",
                    own[k]);
   const auto ranks = static_cast<std::size_t>(comm.size());
-  send_.assign(ranks, {});
-  for (std::size_t k = 0; k < own.size(); ++k) {
-    const Vec3& x = store.x[own[k]];
-    const Vec3 r = Vec3::Constant(reach[k]);
-    for (const int rank : partition.ranksMeeting(x - r, x + r))
-      if (rank != comm.rank()) send_[static_cast<std::size_t>(rank)].push_back(own[k]);
+  // The own entries each rank needs within `scale` times their reach, in order.
+  auto wanted = [&](double scale) {
+    std::vector<std::vector<LocalIndex>> lists(ranks);
+    for (std::size_t k = 0; k < own.size(); ++k) {
+      const Vec3& x = store.x[own[k]];
+      const Vec3 r = Vec3::Constant(scale * reach[k]);
+      for (const int rank : partition.ranksMeeting(x - r, x + r))
+        if (rank != comm.rank()) lists[static_cast<std::size_t>(rank)].push_back(own[k]);
+    }
+    return lists;
+  };
+  // The last build's ghosts do while each rank is sent all it needs now (both lists in store order).
+  bool short_of = !built_;
+  if (built_) {
+    const std::vector<std::vector<LocalIndex>> needed = wanted(1.0);
+    for (std::size_t r = 0; r < ranks && !short_of; ++r)
+      short_of = !std::includes(send_[r].begin(), send_[r].end(), needed[r].begin(), needed[r].end());
   }
+  if (!comm.any(short_of)) {
+    refreshFields(store);
+    ++keeps_;
+    return;
+  }
+  ++fetches_;
+  send_ = wanted(1.0 + skin);
   const std::vector<std::vector<std::byte>> incoming = comm.exchange(packEntries(store, send_));
 
   // Each message: its entry count, then each array of its entries in fields() order. The ghosts
@@ -159,6 +190,7 @@ void Halo::build(Store& store, const Partition& partition, std::span<const doubl
     if (!slot_[r].empty()) from_.push_back(static_cast<int>(r));
   }
   ghosts_ = static_cast<LocalIndex>(total - own.size());
+  built_ = true;
 }
 
 template <class Pack, class Size, class Unpack>

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstring>
+#include <limits>
 #include <numeric>
 #include <span>
 #include <type_traits>
@@ -84,17 +85,22 @@ std::size_t fieldBytes(Store& store) {
 // the arrays hold trivially copyable values).
 template <class Store>
 void packFields(const Store& store, std::span<const LocalIndex> which, std::vector<std::byte>& buffer) {
-  Store::fields(store, [&](const char* name, const auto& values, const auto&) {
+  // The buffer grows once, and each index is checked once against the shortest array.
+  std::size_t at = buffer.size(), shortest = std::numeric_limits<std::size_t>::max();
+  Store::fields(store,
+                [&](const char*, const auto& values, const auto&) { shortest = std::min(shortest, values.size()); });
+  for (const LocalIndex i : which)
+    KESSLER_VERIFY(i >= 0 && static_cast<std::size_t>(i) < shortest, "packing entry {} of a store of {}", i, shortest);
+  buffer.resize(at + which.size() * fieldBytes(store));
+  Store::fields(store, [&](const char*, const auto& values, const auto&) {
     using T = typename std::remove_reference_t<decltype(values)>::value_type;
     static_assert(bytewise<T>, "a store array must hold plain values to be packed");
-    std::size_t at = buffer.size();
-    buffer.resize(at + which.size() * sizeof(T));
+    std::byte* to = buffer.data() + at;
     for (const LocalIndex i : which) {
-      KESSLER_VERIFY(i >= 0 && static_cast<std::size_t>(i) < values.size(), "packing entry {} of '{}', which holds {}",
-                     i, name, values.size());
-      std::memcpy(buffer.data() + at, &values[static_cast<std::size_t>(i)], sizeof(T));
-      at += sizeof(T);
+      std::memcpy(to, &values[static_cast<std::size_t>(i)], sizeof(T));
+      to += sizeof(T);
     }
+    at += which.size() * sizeof(T);
   });
 }
 
@@ -121,14 +127,18 @@ std::size_t unpackFields(Store& store, std::span<const std::byte> buffer, std::s
 template <class Store>
 std::size_t unpackFieldsInto(Store& store, std::span<const std::byte> buffer, std::size_t offset,
                              std::span<const LocalIndex> slots) {
-  Store::fields(store, [&](const char* name, auto& values, const auto&) {
+  std::size_t shortest = std::numeric_limits<std::size_t>::max();
+  Store::fields(store,
+                [&](const char*, const auto& values, const auto&) { shortest = std::min(shortest, values.size()); });
+  for (const LocalIndex i : slots)
+    KESSLER_VERIFY(i >= 0 && static_cast<std::size_t>(i) < shortest, "unpacking into entry {} of a store of {}", i,
+                   shortest);
+  KESSLER_VERIFY(offset + slots.size() * fieldBytes(store) <= buffer.size(),
+                 "unpacking {} entries past the buffer's end ({} bytes from {})", slots.size(), buffer.size(), offset);
+  Store::fields(store, [&](const char*, auto& values, const auto&) {
     using T = typename std::remove_reference_t<decltype(values)>::value_type;
     static_assert(bytewise<T>, "a store array must hold plain values to be unpacked");
-    KESSLER_VERIFY(offset + slots.size() * sizeof(T) <= buffer.size(),
-                   "unpacking {} entries of '{}' past the buffer's end", slots.size(), name);
     for (const LocalIndex i : slots) {
-      KESSLER_VERIFY(i >= 0 && static_cast<std::size_t>(i) < values.size(),
-                     "unpacking into entry {} of '{}', which holds {}", i, name, values.size());
       std::memcpy(static_cast<void*>(&values[static_cast<std::size_t>(i)]), buffer.data() + offset, sizeof(T));
       offset += sizeof(T);
     }

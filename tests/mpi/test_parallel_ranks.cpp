@@ -178,9 +178,10 @@ TEST(Ranks, PointsMigrateIntoTheirSubdomainsAndBackBitwise) {
   for (LocalIndex p = 0; p < points.owned; ++p) EXPECT_NEAR((points.x[p] - original.x[p]).norm(), 0.0, 1e-15);
 }
 
-// Ghosts: on each rank exactly the other ranks' points whose box x +- reach meets its subdomain
-// (found here by brute force over every point), in the order of the rank they come from; a refresh
-// brings their owners' values.
+// Ghosts: on each rank exactly the other ranks' points whose box x +- (1 + skin) reach meets its
+// subdomain (found here by brute force over every point), in the order of the rank they come from;
+// a refresh brings their owners' values. A build again keeps them while they hold every entry
+// needed, and fetches afresh once they do not.
 TEST(Ranks, HaloHoldsExactlyTheEntriesThatReachTheSubdomain) {
   PointStore points = lattice();
   Partition partition(world());
@@ -194,17 +195,21 @@ TEST(Ranks, HaloHoldsExactlyTheEntriesThatReachTheSubdomain) {
   const Box mine = partition.subdomain(world().rank());
   const auto ids = gather(points.id);
   const auto positions = gather(points.x);
-  const auto reaches = gather(reach);
-  std::vector<Index> expected;
-  for (int r = 0; r < world().size(); ++r) {
-    if (r == world().rank()) continue;
-    for (std::size_t i = 0; i < positions[r].size(); ++i) {
-      const Vec3 lo = positions[r][i] - Vec3::Constant(reaches[r][i]),
-                 hi = positions[r][i] + Vec3::Constant(reaches[r][i]);
-      if ((lo.array() <= mine.hi.array()).all() && (hi.array() >= mine.lo.array()).all()) expected.push_back(ids[r][i]);
+  auto within = [&](double scale) {
+    const auto reaches = gather(reach);
+    std::vector<Index> found;
+    for (int r = 0; r < world().size(); ++r) {
+      if (r == world().rank()) continue;
+      for (std::size_t i = 0; i < positions[r].size(); ++i) {
+        const Vec3 lo = positions[r][i] - Vec3::Constant(scale * reaches[r][i]),
+                   hi = positions[r][i] + Vec3::Constant(scale * reaches[r][i]);
+        if ((lo.array() <= mine.hi.array()).all() && (hi.array() >= mine.lo.array()).all()) found.push_back(ids[r][i]);
+      }
     }
-  }
-  std::sort(expected.begin(), expected.end());
+    std::sort(found.begin(), found.end());
+    return found;
+  };
+  const std::vector<Index> expected = within(1.0 + Halo::skin);
 
   Halo halo;
   halo.build(points, partition, reach, world());
@@ -234,16 +239,37 @@ TEST(Ranks, HaloHoldsExactlyTheEntriesThatReachTheSubdomain) {
   halo.refresh(value);
   for (LocalIndex p = 0; p < points.owned; ++p) EXPECT_EQ(value[p], 0.5 + 2.0 * static_cast<double>(points.id[p]));
 
-  // Built again over the ghosts (as a step does): they are replaced, the own entries kept, in id order.
+  // Built again over the ghosts (as a step does): they hold all that is needed, so they stay in
+  // their slots and take their owners' values afresh.
   const std::vector<Index> held = points.id;
   const std::vector<double> mass = points.mass;
   for (LocalIndex p = 0; p < points.owned; ++p)
     if (halo.ghost(p)) points.mass[p] = -2.0;  // stale: the new build fetches the owner's value
   ASSERT_EQ(halo.ownEntries(points).size(), static_cast<std::size_t>(own));
   halo.build(points, partition, reach, world());
+  EXPECT_EQ(halo.fetches(), 1);
+  EXPECT_EQ(halo.keeps(), 1);
   EXPECT_EQ(points.id, held);
   EXPECT_EQ(points.mass, mass);
   EXPECT_EQ(halo.ghosts(), static_cast<LocalIndex>(expected.size()));
+  // Reaches grown past the skin: the ghosts no longer hold all that is needed, and are fetched
+  // afresh (on every rank) within the new reaches and their skin.
+  for (double& r : reach) r *= 3.0;
+  const std::vector<Index> wider = within(1.0 + Halo::skin);
+  EXPECT_GT(wider.size(), expected.size());
+  for (LocalIndex p = 0; p < points.owned; ++p)
+    if (halo.ghost(p)) points.mass[p] = -2.0;
+  halo.build(points, partition, reach, world());
+  EXPECT_EQ(halo.fetches(), 2);
+  EXPECT_EQ(halo.ghosts(), static_cast<LocalIndex>(wider.size()));
+  std::vector<Index> ghost_ids_now;
+  for (LocalIndex p = 0; p < points.owned; ++p)
+    if (halo.ghost(p)) {
+      ghost_ids_now.push_back(points.id[p]);
+      EXPECT_GT(points.mass[p], 0.0);
+    }
+  EXPECT_EQ(ghost_ids_now, wider);
+  for (double& r : reach) r /= 3.0;
   // Dropped (before a migration): the own entries stay, in order.
   halo.dropGhosts(points);
   EXPECT_EQ(points.owned, own);

@@ -78,6 +78,9 @@ class Distribution {
   LocalIndex ownPoints() const { return own_points_; }
   LocalIndex ghostPointCount() const { return points_.ghosts(); }
   LocalIndex ghostNodeCount() const { return nodes_.ghosts(); }
+  // The steps whose halos were fetched afresh, and those whose ghosts were kept (points' halo).
+  long haloFetches() const { return points_.fetches(); }
+  long haloKeeps() const { return points_.keeps(); }
 
  private:
   const parallel::Communicator& comm_;

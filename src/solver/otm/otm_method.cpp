@@ -127,7 +127,9 @@ std::vector<std::pair<std::string, double>> OtmMethod::rankSizes() const {
           {"halo_search_radius_m", integrator_.haloSupport()},
           {"rank0_own_points", static_cast<double>(distribution_->ownPoints())},
           {"rank0_ghost_points", static_cast<double>(distribution_->ghostPointCount())},
-          {"rank0_ghost_nodes", static_cast<double>(distribution_->ghostNodeCount())}};
+          {"rank0_ghost_nodes", static_cast<double>(distribution_->ghostNodeCount())},
+          {"halo_fetches", static_cast<double>(distribution_->haloFetches())},
+          {"halo_keeps", static_cast<double>(distribution_->haloKeeps())}};
 }
 
 std::vector<std::string> OtmMethod::notes() const {
