@@ -8,7 +8,7 @@
 // entries out to a reach and a skin, so that the ghosts it leaves stay enough while entries move:
 // build() again keeps them in their slots and sends their values afresh while every entry needed
 // now is among them, and otherwise replaces them with those needed now, in one pass over the
-// store. Ghosts beyond the need are held, never used: no result depends on them. refresh()
+// store. Ghosts beyond the need are held and updated, but no own entry reads them. refresh()
 // later sends only chosen arrays again, into the same slots, in messages between neighbouring ranks
 // alone. After build() every entry counts as the store's (`owned` is its size): a method computes
 // ghosts too, and their owners' values replace what it got wrong.

@@ -1,6 +1,8 @@
 // The main of the multi-rank tests (tests/mpi): MPI started before GoogleTest, one full report from
 // rank 0, and each other rank's failures on lines that name it; a failure on any rank fails the run
-// through its exit code.
+// through its exit code. A fatal failure (ASSERT_*) on one rank ends the test there while the others
+// go on into its next collective, where they would wait until the test's timeout: it aborts every
+// rank at once instead.
 #include "parallel/communicator.hpp"
 
 #include <gtest/gtest.h>
@@ -23,6 +25,19 @@ class FailurePrinter : public ::testing::EmptyTestEventListener {
   int rank_;
 };
 
+// Every rank: a fatal failure aborts the run on every rank (after the printers above have reported it).
+class FatalAborts : public ::testing::EmptyTestEventListener {
+ public:
+  void OnTestPartResult(const ::testing::TestPartResult& result) override {
+    if (!result.fatally_failed()) return;
+    std::fprintf(stderr, "[rank %d] a fatal failure: aborting every rank\n",
+                 kessler::parallel::Communicator::world().rank());
+    std::fflush(stderr);
+    std::fflush(stdout);
+    kessler::parallel::Communicator::world().abort(1);
+  }
+};
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -35,6 +50,7 @@ int main(int argc, char** argv) {
     delete listeners.Release(listeners.default_result_printer());
     listeners.Append(new FailurePrinter(world.rank()));
   }
+  ::testing::UnitTest::GetInstance()->listeners().Append(new FatalAborts);
   const int failed = RUN_ALL_TESTS();
   return world.any(failed != 0) ? 1 : 0;
 }
