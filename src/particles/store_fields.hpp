@@ -81,16 +81,24 @@ std::size_t fieldBytes(Store& store) {
   return bytes;
 }
 
+// Every index of `entries` names an entry of every array of the store (what: the operation, for the
+// error).
+template <class Store>
+void checkEntries(const Store& store, std::span<const LocalIndex> entries, const char* what) {
+  std::size_t shortest = std::numeric_limits<std::size_t>::max();
+  Store::fields(store,
+                [&](const char*, const auto& values, const auto&) { shortest = std::min(shortest, values.size()); });
+  for (const LocalIndex i : entries)
+    KESSLER_VERIFY(i >= 0 && static_cast<std::size_t>(i) < shortest, "{} entry {} of a store of {}", what, i, shortest);
+}
+
 // Appends entries `which` of every array to `buffer`, array by array in fields() order (raw bytes:
 // the arrays hold trivially copyable values).
 template <class Store>
 void packFields(const Store& store, std::span<const LocalIndex> which, std::vector<std::byte>& buffer) {
-  // The buffer grows once, and each index is checked once against the shortest array.
-  std::size_t at = buffer.size(), shortest = std::numeric_limits<std::size_t>::max();
-  Store::fields(store,
-                [&](const char*, const auto& values, const auto&) { shortest = std::min(shortest, values.size()); });
-  for (const LocalIndex i : which)
-    KESSLER_VERIFY(i >= 0 && static_cast<std::size_t>(i) < shortest, "packing entry {} of a store of {}", i, shortest);
+  // The buffer grows once, and each index is checked once.
+  checkEntries(store, which, "packing");
+  std::size_t at = buffer.size();
   buffer.resize(at + which.size() * fieldBytes(store));
   Store::fields(store, [&](const char*, const auto& values, const auto&) {
     using T = typename std::remove_reference_t<decltype(values)>::value_type;
@@ -127,12 +135,7 @@ std::size_t unpackFields(Store& store, std::span<const std::byte> buffer, std::s
 template <class Store>
 std::size_t unpackFieldsInto(Store& store, std::span<const std::byte> buffer, std::size_t offset,
                              std::span<const LocalIndex> slots) {
-  std::size_t shortest = std::numeric_limits<std::size_t>::max();
-  Store::fields(store,
-                [&](const char*, const auto& values, const auto&) { shortest = std::min(shortest, values.size()); });
-  for (const LocalIndex i : slots)
-    KESSLER_VERIFY(i >= 0 && static_cast<std::size_t>(i) < shortest, "unpacking into entry {} of a store of {}", i,
-                   shortest);
+  checkEntries(store, slots, "unpacking into");
   KESSLER_VERIFY(offset + slots.size() * fieldBytes(store) <= buffer.size(),
                  "unpacking {} entries past the buffer's end ({} bytes from {})", slots.size(), buffer.size(), offset);
   Store::fields(store, [&](const char*, auto& values, const auto&) {
