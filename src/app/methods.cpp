@@ -19,7 +19,7 @@ Problem deckProblem(const io::RunConfig& config) {
   }
   problem.method = config.method;
   problem.symmetry_axes = config.symmetry_axes;
-  problem.settings = MethodSettings{config.solver, config.otm};
+  problem.settings = MethodSettings{config.solver, config.otm, {}};
   return problem;
 }
 

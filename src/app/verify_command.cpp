@@ -3,9 +3,12 @@
 #include "app/commands.hpp"
 #include "core/error.hpp"
 #include "core/timer.hpp"
+#include "solver/methods.hpp"
+#include "verify/fixtures.hpp"
 #include "verify/problem.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
 #include <limits>
@@ -19,6 +22,7 @@ struct VerifyOptions {
   std::vector<std::string> names;
   bool json = false;
   bool list = false;
+  std::string method = "otm";
 };
 
 std::vector<const verify::Check*> select(const std::vector<std::string>& names) {
@@ -55,6 +59,11 @@ void runVerify(const VerifyOptions& options) {
     for (const verify::Check& p : verify::problems()) fmt::print("{:<20} {}\n", p.name, p.description);
     return;
   }
+  const std::vector<std::string>& methods = methodNames();
+  if (std::find(methods.begin(), methods.end(), options.method) == methods.end())
+    throw InputError(
+        fmt::format("--method {}: not a method of this Kessler (known: {})", options.method, fmt::join(methods, ", ")));
+  verify::useMethod(options.method);
   const std::vector<const verify::Check*> chosen = select(options.names);
   if (!options.json)
     fmt::print("{:<20} {:>13} {:>13} {:>10} {:>9}  {:<6} {}\n", "problem", "measured", "reference", "error",
@@ -65,8 +74,9 @@ void runVerify(const VerifyOptions& options) {
     verify::Outcome o;
     try {
       o = p->run();
-    } catch (const NumericalError& e) {
-      // A problem whose run breaks down has failed; the others still run and report.
+    } catch (const Error& e) {
+      // A problem whose run breaks down (or that the method cannot run) has failed; the others
+      // still run and report.
       o.name = p->name;
       o.quantity = "run failed";
       o.measured = o.reference = o.error = o.tolerance = std::numeric_limits<double>::quiet_NaN();
@@ -95,6 +105,8 @@ void addVerifyCommand(CLI::App& app) {
   cmd->add_option("names", options->names, "Problems to run (default: all)");
   cmd->add_flag("--json", options->json, "Print one JSON object per problem instead of a table");
   cmd->add_flag("--list", options->list, "List the problems and exit");
+  cmd->add_option("--method", options->method, "The method the problems run (solver.method): otm or sph")
+      ->capture_default_str();
   cmd->callback([options] { runVerify(*options); });
 }
 

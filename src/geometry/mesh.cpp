@@ -17,7 +17,9 @@ namespace kessler::geometry {
 
 namespace {
 
-bool positiveFinite(double x) { return std::isfinite(x) && x > 0.0; }
+bool positiveFinite(double x) {
+  return std::isfinite(x) && x > 0.0;
+}
 
 void requireValidShape(const Shape& shape) {
   const auto fail = [&shape](const std::string& why) {
@@ -51,8 +53,8 @@ void requireValidShape(const Shape& shape) {
 void requireFeasibleSize(const MeshRequest& request) {
   double estimate = 8.5 * volume(request.shape) / std::pow(request.mesh_size, 3);
   if (request.refine) {
-    estimate += 8.5 * volume(Sphere{request.refine->center, request.refine->radius}) /
-                std::pow(request.refine->size, 3);
+    estimate +=
+        8.5 * volume(Sphere{request.refine->center, request.refine->radius}) / std::pow(request.refine->size, 3);
   }
   if (estimate > 0.5 * std::numeric_limits<LocalIndex>::max()) {
     throw InputError(
@@ -87,8 +89,7 @@ void requireValidRequest(const MeshRequest& request) {
     if (!positiveFinite(r.radius)) {
       throw InputError(fmt::format("refinement radius {} m must be positive", r.radius));
     }
-    if (!positiveFinite(r.size))
-      throw InputError(fmt::format("refinement size {} m must be positive", r.size));
+    if (!positiveFinite(r.size)) throw InputError(fmt::format("refinement size {} m must be positive", r.size));
   }
   requireFeasibleSize(request);
 }
@@ -140,8 +141,8 @@ void checkSymmetry(TetMesh& mesh, const std::vector<int>& axes, const Fail& fail
   for (const int axis : axes) {
     for (Vec3& v : mesh.vertices) {
       if (v[axis] < -tolerance) {
-        fail(fmt::format("vertex at {}={:.6g} m lies on the negative side of the symmetry plane {}=0",
-                         names[axis], v[axis], names[axis]));
+        fail(fmt::format("vertex at {}={:.6g} m lies on the negative side of the symmetry plane {}=0", names[axis],
+                         v[axis], names[axis]));
       }
       v[axis] = std::max(v[axis], 0.0);
     }
@@ -192,15 +193,14 @@ std::vector<std::array<LocalIndex, 2>> faceAdjacency(const TetMesh& mesh) {
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
     const auto first = faces.begin() + static_cast<std::ptrdiff_t>(start[v]);
     const auto last = faces.begin() + static_cast<std::ptrdiff_t>(start[v + 1]);
-    std::sort(first, last, [](const Face& x, const Face& y) {
-      return std::tie(x.b, x.c, x.tet) < std::tie(y.b, y.c, y.tet);
-    });
+    std::sort(first, last,
+              [](const Face& x, const Face& y) { return std::tie(x.b, x.c, x.tet) < std::tie(y.b, y.c, y.tet); });
     for (auto f = first; f != last;) {
       auto run = f + 1;
       while (run != last && run->b == f->b && run->c == f->c) ++run;
       if (run - f > 2) {
-        throw InputError(fmt::format("the face ({}, {}, {}) is shared by {} tetrahedra (a valid mesh has at most 2)",
-                                     v, f->b, f->c, run - f));
+        throw InputError(fmt::format("the face ({}, {}, {}) is shared by {} tetrahedra (a valid mesh has at most 2)", v,
+                                     f->b, f->c, run - f));
       }
       if (run - f == 2) pairs.push_back({f->tet, (f + 1)->tet});
       f = run;
@@ -254,9 +254,8 @@ Discretisation discretise(const TetMesh& mesh) {
     if (!(vol > 0.0)) first_bad = std::min(first_bad, e);
     d.points[e] = 0.25 * (a + b + c + p);
     d.volumes[e] = vol;
-    d.spacings[e] = ((b - a).norm() + (c - a).norm() + (p - a).norm() + (c - b).norm() + (p - b).norm() +
-                     (p - c).norm()) /
-                    6.0;
+    d.spacings[e] =
+        ((b - a).norm() + (c - a).norm() + (p - a).norm() + (c - b).norm() + (p - b).norm() + (p - c).norm()) / 6.0;
   }
   if (first_bad < n) {
     throw InputError(fmt::format("tetrahedron {} has non-positive volume {:.3g} m^3 (inverted or degenerate)",
@@ -266,15 +265,15 @@ Discretisation discretise(const TetMesh& mesh) {
   return d;
 }
 
-std::vector<LocalIndex> selectNodes(const Shape& shape, const std::vector<Vec3>& nodes, FixedNodes which) {
+std::vector<LocalIndex> selectNodes(const Shape& shape, const std::vector<Vec3>& nodes, FixedNodes which,
+                                    double depth) {
   if (which == FixedNodes::none) return {};
   if (!std::holds_alternative<Box>(shape) && !std::holds_alternative<Cylinder>(shape)) {
-    throw InputError(
-        fmt::format("fixed lateral faces apply to boxes and cylinders, not to a {}", kindName(shape)));
+    throw InputError(fmt::format("fixed lateral faces apply to boxes and cylinders, not to a {}", kindName(shape)));
   }
   requireValidShape(shape);
   const BoundingBox box = bounds(shape);
-  const double tolerance = 1e-6 * (box.max - box.min).maxCoeff();
+  const double tolerance = std::max(1e-6 * (box.max - box.min).maxCoeff(), depth);
   KESSLER_VERIFY(nodes.size() < static_cast<std::size_t>(std::numeric_limits<LocalIndex>::max()),
                  "{} nodes exceed 32-bit local indices", nodes.size());
 

@@ -57,8 +57,10 @@ enum class FixedNodes {
 };
 
 // Indices of the nodes of `nodes` that lie on the selected faces of `shape` (within a tolerance
-// of 1e-6 of the shape's size). Throws kessler::InputError if the selection does not apply to
-// the shape (e.g. lateral faces of a sphere).
-std::vector<LocalIndex> selectNodes(const Shape& shape, const std::vector<Vec3>& nodes, FixedNodes which);
+// of 1e-6 of the shape's size, or within `depth` of them: a particle method's first layer, whose
+// particles sit half a spacing inside). Throws kessler::InputError if the selection does not apply
+// to the shape (e.g. lateral faces of a sphere).
+std::vector<LocalIndex> selectNodes(const Shape& shape, const std::vector<Vec3>& nodes, FixedNodes which,
+                                    double depth = 0.0);
 
 }  // namespace kessler::geometry

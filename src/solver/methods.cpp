@@ -3,6 +3,8 @@
 #include "core/error.hpp"
 #include "solver/otm/otm_method.hpp"
 #include "solver/otm/setup.hpp"
+#include "solver/sph/setup.hpp"
+#include "solver/sph/sph_method.hpp"
 
 #include <fmt/ranges.h>
 
@@ -12,28 +14,41 @@ namespace kessler {
 
 namespace {
 
-void requireKnown(const Problem& problem) {
+void requireKnown(const Problem& problem, const parallel::Communicator* ranks) {
   const std::vector<std::string>& known = methodNames();
   if (std::find(known.begin(), known.end(), problem.method) == known.end())
     throw Error(fmt::format("solver.method '{}' is not a method of this Kessler (known: {})", problem.method,
                             fmt::join(known, ", ")));
+  if (problem.method != "otm" && ranks && ranks->size() > 1)
+    throw Error(fmt::format("solver.method {} does not yet run on several ranks (docs/parallel.md): run it on one",
+                            problem.method));
 }
 
 }  // namespace
 
 const std::vector<std::string>& methodNames() {
-  static const std::vector<std::string> names{"otm"};
+  static const std::vector<std::string> names{"otm", "sph"};
   return names;
 }
 
 std::unique_ptr<Method> makeMethod(const Problem& problem, const parallel::Communicator* ranks) {
-  requireKnown(problem);
+  requireKnown(problem, ranks);
+  if (problem.method == "sph")
+    return std::make_unique<sph::SphMethod>(sph::buildModel(problem), sph::settingsFor(problem));
   return std::make_unique<otm::OtmMethod>(otm::buildModel(problem), problem, ranks);
 }
 
 std::unique_ptr<Method> makeMethod(const Problem& problem, ParticleState&& restored,
                                    const parallel::Communicator* ranks) {
-  requireKnown(problem);
+  requireKnown(problem, ranks);
+  if (problem.method == "sph") {
+    sph::Model model;
+    static_cast<ParticleState&>(model) = std::move(restored);
+    model.constrained.resize(model.points.x.size(), 0);  // SphMethod::load reads them
+    model.prescribed_v.resize(model.points.x.size(), Vec3::Zero());
+    model.viscosity.resize(model.points.x.size(), 0.0);
+    return std::make_unique<sph::SphMethod>(std::move(model), sph::settingsFor(problem));
+  }
   otm::Model model;
   static_cast<ParticleState&>(model) = std::move(restored);
   return std::make_unique<otm::OtmMethod>(std::move(model), problem, ranks);

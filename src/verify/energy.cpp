@@ -25,7 +25,7 @@ Outcome energy() {
   };
   const double period = 2.0 * length / std::sqrt(70e9 / 2700.0);
   const double end_time = problem.settings.solver.end_time = 5.0 * period;
-  std::unique_ptr<Method> method = makeMethod(problem);
+  std::unique_ptr<Method> method = makeCheckMethod(problem);
   method->initialise();
   const double e0 = method->energies().total();
 

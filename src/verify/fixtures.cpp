@@ -30,8 +30,30 @@ PlaneConstraint lockAxis(int axis) {
   return every;
 }
 
+namespace {
+
+std::string& chosenMethod() {
+  static std::string name = "otm";
+  return name;
+}
+
+}  // namespace
+
+void useMethod(const std::string& name) {
+  chosenMethod() = name;
+}
+
+const std::string& checkedMethod() {
+  return chosenMethod();
+}
+
+std::unique_ptr<Method> makeCheckMethod(Problem problem) {
+  problem.method = checkedMethod();
+  return makeMethod(problem);
+}
+
 std::unique_ptr<Method> runToEnd(const Problem& problem, const std::function<bool(const Method&)>& after_step) {
-  std::unique_ptr<Method> method = makeMethod(problem);
+  std::unique_ptr<Method> method = makeCheckMethod(problem);
   method->initialise();
   while (!method->finished()) {
     method->step();

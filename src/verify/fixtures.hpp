@@ -21,7 +21,14 @@ BodySetup boxBody(const std::string& name, const geometry::Box& box, const std::
 // across it).
 PlaneConstraint lockAxis(int axis);
 
-// The problem's method, initialised and run to its end time; `after_step` (if given) is called
+// The method the checks run (`kessler verify --method`; otm unless chosen): every check builds its
+// problem's method with makeCheckMethod.
+void useMethod(const std::string& name);
+const std::string& checkedMethod();
+// The problem's method, as the checks run it (its solver.method set to checkedMethod()).
+std::unique_ptr<Method> makeCheckMethod(Problem problem);
+
+// The problem's method (makeCheckMethod), initialised and run to its end time; `after_step` (if given) is called
 // after every step and stops the run when it returns false.
 std::unique_ptr<Method> runToEnd(const Problem& problem,
                                  const std::function<bool(const Method&)>& after_step = nullptr);

@@ -59,7 +59,7 @@ GriffithResult runGriffith(const GriffithCase& g) {
   problem.settings.solver.erosion_radius = g.erosion_radius;
   problem.settings.otm.crack_visibility = g.crack_visibility;
 
-  std::unique_ptr<Method> method = makeMethod(problem);
+  std::unique_ptr<Method> method = makeCheckMethod(problem);
   const PointStore& points = method->state().points;
   method->initialise();
   const auto initial_eroded =

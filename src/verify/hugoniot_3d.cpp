@@ -152,7 +152,7 @@ Hugoniot3dResult runHugoniot3d(double mesh_size, MethodSettings settings, bool o
 
   problem.settings = settings;
   problem.settings.solver.end_time = t2;
-  std::unique_ptr<Method> method = makeMethod(problem);
+  std::unique_ptr<Method> method = makeCheckMethod(problem);
   const ParticleState& model = method->state();
   std::vector<double> z0(static_cast<std::size_t>(model.points.size()));  // initial heights by point id
   for (LocalIndex p = 0; p < model.points.size(); ++p)

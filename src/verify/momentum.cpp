@@ -21,7 +21,7 @@ Outcome momentum() {
       boxBody("block B", {Vec3(4.3 * h, 1.5 * h, -1.2 * h), Vec3(10.3 * h, 7.5 * h, 3.8 * h)}, {6, 6, 5},
               Vec3(-60.0, 0.0, 5.0), material)};
   problem.settings.solver.end_time = 6e-6;
-  std::unique_ptr<Method> method = makeMethod(problem);
+  std::unique_ptr<Method> method = makeCheckMethod(problem);
   method->initialise();
   const ParticleState& model = method->state();
 

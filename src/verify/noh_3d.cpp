@@ -44,7 +44,7 @@ NohResult runNoh3d(double mesh_size, MethodSettings settings, double end_time) {
   problem.symmetry_axes = {0, 1, 2};
   problem.settings = settings;
   problem.settings.solver.end_time = end_time;
-  std::unique_ptr<Method> method = makeMethod(problem);
+  std::unique_ptr<Method> method = makeCheckMethod(problem);
   const ParticleState& model = method->state();
 
   NohResult r;

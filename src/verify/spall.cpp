@@ -77,7 +77,7 @@ SpallResult runSpall(double speed, double cell) {
   }
   // Twice the time the release waves take to meet: the spall has formed and opened by then.
   problem.settings.solver.end_time = 2.0 * 3.0 * delta / eos.sound_speed;
-  std::unique_ptr<Method> method = makeMethod(problem);
+  std::unique_ptr<Method> method = makeCheckMethod(problem);
   const ParticleState& model = method->state();
   std::vector<double> z0(model.points.x.size());  // initial heights by point id
   for (LocalIndex p = 0; p < model.points.size(); ++p)

@@ -21,7 +21,7 @@ std::unique_ptr<Method> runWithThreads(int threads) {
       boxBody("plate", {Vec3(4.2e-3, -3e-3, -3e-3), Vec3(6.2e-3, 7e-3, 7e-3)}, {2, 10, 10}, Vec3::Zero(), material)};
   problem.settings.solver.end_time = 1.0;
   problem.settings.solver.max_steps = 100;
-  std::unique_ptr<Method> method = makeMethod(problem);
+  std::unique_ptr<Method> method = makeCheckMethod(problem);
   method->initialise();
   for (int s = 0; s < 100; ++s) method->step();
   omp_set_num_threads(saved);

@@ -63,10 +63,32 @@ struct OtmOptions {
   double volume_relaxation = 10.0;
 };
 
+// SPH's constants (docs/theory.md §10). Not deck keys: the theory fixes them, studies vary them.
+struct SphOptions {
+  // Smoothing length h = smoothing * the particle's current spacing (support 2h): 1.2 gives 57
+  // neighbours on a cubic lattice, the usual choice for solids.
+  double smoothing = 1.2;
+  // Monaghan's artificial viscosity (Monaghan, Annu. Rev. Astron. Astrophys. 30:543, 1992), its
+  // linear coefficient alpha per particle by Morris & Monaghan's switch (J. Comput. Phys. 136:41,
+  // 1997): alpha rises towards viscosity_max where the particle is compressed and decays to
+  // viscosity_min over viscosity_decay^-1 sound crossings of h; the quadratic coefficient is
+  // beta = viscosity_ratio * alpha. A shock takes (1, 2), the standard pair; a smooth elastic
+  // wave keeps a tenth of it.
+  double viscosity_max = 1.0;
+  double viscosity_min = 0.1;
+  double viscosity_ratio = 2.0;
+  double viscosity_decay = 0.2;
+  // Monaghan's artificial stress against the tensile instability (Gray, Monaghan & Swift, CMAME
+  // 190:6641, 2001): epsilon and the exponent n of f = W(r) / W(spacing).
+  double artificial_stress = 0.3;
+  int artificial_stress_exponent = 4;
+};
+
 // A method's settings: what every method reads and each method's own block.
 struct MethodSettings {
   SolverSettings solver;
   OtmOptions otm;
+  SphOptions sph;
 };
 
 }  // namespace kessler

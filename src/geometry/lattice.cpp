@@ -1,0 +1,121 @@
+#include "geometry/lattice.hpp"
+
+#include "core/error.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace kessler::geometry {
+
+namespace {
+
+// The thinnest part of a shape, m.
+double thinnest(const Shape& shape) {
+  if (const auto* b = std::get_if<Box>(&shape)) return (b->max - b->min).minCoeff();
+  if (const auto* s = std::get_if<Sphere>(&shape)) return 2.0 * s->radius;
+  const auto& c = std::get<Cylinder>(shape);
+  return std::min(2.0 * c.radius, c.axis.norm());
+}
+
+// The volume of the shape on the positive side of the symmetry planes: exact where each plane
+// either misses the shape or halves it (a sphere's centre, a cylinder's axis in the plane), a fine
+// midpoint sum otherwise.
+double clippedVolume(const Shape& shape, const BoundingBox& box, const BoundingBox& clipped,
+                     const std::vector<int>& axes) {
+  double whole = volume(shape);
+  bool exact = true;
+  for (const int a : axes) {
+    if (box.min[a] >= 0.0) continue;
+    const Vec3 centre = 0.5 * (box.min + box.max);
+    const auto* c = std::get_if<Cylinder>(&shape);
+    const bool halves = std::abs(centre[a]) <= 1e-12 * (box.max - box.min).maxCoeff() &&
+                        (c == nullptr || (std::abs(c->base[a]) <= 1e-12 * c->radius && c->axis[a] == 0.0)) &&
+                        !std::holds_alternative<Box>(shape);
+    if (halves)
+      whole *= 0.5;
+    else
+      exact = false;
+  }
+  if (exact) return whole;
+  constexpr int n = 160;
+  const Vec3 step = (clipped.max - clipped.min) / n;
+  long inside = 0;
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        inside += contains(shape, clipped.min + (Vec3(i, j, k) + Vec3::Constant(0.5)).cwiseProduct(step));
+  return static_cast<double>(inside) * step.prod();
+}
+
+}  // namespace
+
+Lattice fillLattice(const Shape& shape, double size, const std::vector<int>& symmetry_axes) {
+  if (std::holds_alternative<MeshFile>(shape))
+    throw InputError("a particle lattice fills an analytic shape (box, sphere, cylinder), not a mesh file");
+  if (!(size > 0.0)) throw InputError(fmt::format("element size must be positive, got {}", size));
+  if (thinnest(shape) < 2.0 * size * (1.0 - 1e-9))
+    throw InputError(
+        fmt::format("the {}'s thinnest part is {:.4g} mm, less than two elements of {:.4g} mm: give a "
+                    "mesh_size of at most {:.4g} mm",
+                    kindName(shape), 1e3 * thinnest(shape), 1e3 * size, 0.5e3 * thinnest(shape)));
+  const BoundingBox box = bounds(shape);
+  BoundingBox clipped = box;
+  for (const int a : symmetry_axes) clipped.min[a] = std::max(clipped.min[a], 0.0);
+  if (clipped.empty()) throw InputError(fmt::format("the {} lies wholly behind a symmetry plane", kindName(shape)));
+
+  Lattice lattice;
+  lattice.origin = clipped.min;
+  std::array<int, 3> n{};
+  const bool is_box = std::holds_alternative<Box>(shape);
+  for (int a = 0; a < 3; ++a) {
+    const double extent = clipped.max[a] - clipped.min[a];
+    if (is_box) {
+      n[a] = std::max(1, static_cast<int>(std::lround(extent / size)));
+      lattice.cell[a] = extent / n[a];
+    } else {
+      // Cubes from the symmetry plane or the shape's edge.
+      n[a] = std::max(1, static_cast<int>(std::ceil(extent / size - 1e-9)));
+      lattice.cell[a] = size;
+    }
+  }
+  KESSLER_VERIFY(static_cast<double>(n[0]) * n[1] * n[2] < static_cast<double>(std::numeric_limits<LocalIndex>::max()),
+                 "a lattice of {} x {} x {} elements exceeds 32-bit indices", n[0], n[1], n[2]);
+  std::vector<LocalIndex> at(static_cast<std::size_t>(n[0]) * n[1] * n[2], -1);
+  const auto flat = [&](int i, int j, int k) { return (static_cast<std::size_t>(k) * n[1] + j) * n[0] + i; };
+  Discretisation& d = lattice.particles;
+  const double element_volume = lattice.cell.prod();
+  const double spacing = std::cbrt(element_volume);
+  for (int k = 0; k < n[2]; ++k)
+    for (int j = 0; j < n[1]; ++j)
+      for (int i = 0; i < n[0]; ++i) {
+        const Vec3 c = lattice.origin + (Vec3(i, j, k) + Vec3::Constant(0.5)).cwiseProduct(lattice.cell);
+        if (!is_box && !contains(shape, c)) continue;
+        at[flat(i, j, k)] = static_cast<LocalIndex>(d.points.size());
+        d.points.push_back(c);
+        d.volumes.push_back(element_volume);
+        d.spacings.push_back(spacing);
+        lattice.element.push_back({i, j, k});
+      }
+  if (d.points.empty())
+    throw InputError(fmt::format("no element of {:.4g} mm has its centre inside the {}", 1e3 * size, kindName(shape)));
+  if (!is_box) {
+    const double scale =
+        clippedVolume(shape, box, clipped, symmetry_axes) / (static_cast<double>(d.points.size()) * element_volume);
+    for (double& v : d.volumes) v *= scale;
+  }
+  for (std::size_t p = 0; p < d.points.size(); ++p) {
+    const auto [i, j, k] = lattice.element[p];
+    const std::array<std::array<int, 3>, 3> ahead{{{i + 1, j, k}, {i, j + 1, k}, {i, j, k + 1}}};
+    for (const auto& [a, b, c] : ahead) {
+      if (a >= n[0] || b >= n[1] || c >= n[2]) continue;
+      const LocalIndex q = at[flat(a, b, c)];
+      if (q >= 0) d.adjacency.push_back({static_cast<LocalIndex>(p), q});
+    }
+  }
+  return lattice;
+}
+
+}  // namespace kessler::geometry

@@ -1,0 +1,37 @@
+#pragma once
+// A shape filled with a lattice of hexahedral elements, one particle at each element's centroid:
+// the particle-centroid coincident model of finite-element reconstruction (Zhang & Jia, on SPH
+// simulation of satellite breakup; docs/theory.md §10). The particle spacing equals the element edge.
+#include "core/types.hpp"
+#include "geometry/mesh.hpp"
+#include "geometry/shape.hpp"
+
+#include <array>
+#include <vector>
+
+namespace kessler::geometry {
+
+struct Lattice {
+  // Particles (Discretisation: `points`, `volumes`, `spacings`, and `adjacency` for the pairs of
+  // elements that share a face; `nodes` empty).
+  Discretisation particles;
+  // Each particle's element (i, j, k) on the lattice, and the lattice: element (i, j, k) spans
+  // origin + (i, j, k) * cell to origin + (i + 1, j + 1, k + 1) * cell.
+  std::vector<std::array<int, 3>> element;
+  Vec3 origin = Vec3::Zero();
+  Vec3 cell = Vec3::Zero();
+};
+
+// Fills an analytic shape, clipped to x[a] >= 0 on each of `symmetry_axes` (planes through the
+// origin, which the lattice takes as element faces), with elements of edge about `size`:
+//  - a box: a whole number of elements along each axis, as near `size` as fits (the elements are
+//    then slightly oblong, the box exact);
+//  - a sphere or cylinder: cubes of edge `size`, those whose centroid lies inside; each particle's
+//    volume is scaled so that the particles hold the shape's volume (the staircase of a lattice
+//    would hold a few percent more or less).
+// Throws InputError for a mesh file, for a size that is not positive, and for a shape whose
+// thinnest part (a box's least extent, a sphere's or cylinder's diameter, a cylinder's height) is
+// less than two elements: one layer of particles is not a body.
+Lattice fillLattice(const Shape& shape, double size, const std::vector<int>& symmetry_axes);
+
+}  // namespace kessler::geometry

@@ -1,0 +1,342 @@
+#include "solver/sph/integrator.hpp"
+
+#include "core/error.hpp"
+#include "solver/common/stable_step.hpp"
+#include "solver/sph/kernel.hpp"
+
+#include <fmt/format.h>
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace kessler::sph {
+
+Integrator::Integrator(Model& model, const Settings& settings)
+    : model_(model),
+      settings_(settings),
+      erosion_(settings.solver.erosion_radius),
+      release_(settings.solver.erosion_radius) {
+  KESSLER_VERIFY(settings.solver.cfl > 0.0 && settings.solver.cfl <= 1.0, "cfl must lie in (0, 1], got {}",
+                 settings.solver.cfl);
+  KESSLER_VERIFY(settings.solver.end_time > 0.0, "end_time must be positive, got {}", settings.solver.end_time);
+  KESSLER_VERIFY(model.constrained.size() == model.points.x.size() &&
+                     model.prescribed_v.size() == model.points.x.size() &&
+                     model.viscosity.size() == model.points.x.size(),
+                 "{} constraints and {} viscosities for {} particles", model.constrained.size(), model.viscosity.size(),
+                 model.points.x.size());
+  KESSLER_VERIFY(settings.sph.viscosity_min >= 0.0 && settings.sph.viscosity_min <= settings.sph.viscosity_max,
+                 "viscosity coefficients: need 0 <= min {} <= max {}", settings.sph.viscosity_min,
+                 settings.sph.viscosity_max);
+}
+
+void Integrator::initialise() {
+  PointStore& points = model_.points;
+  body_points_ = bodyRanges(points.body, points.owned, model_.bodies.size());
+  for (std::size_t b = 0; b < model_.bodies.size(); ++b)
+    model_.materials[model_.bodies[b].material]->initialise(points, body_points_[b].begin, body_points_[b].end);
+  {
+    ScopedPhase phase(timers_, "constitutive");
+    updateMaterials(0.0);
+  }
+  search();
+  forces();
+  volume_rate_.assign(static_cast<std::size_t>(points.owned), 0.0);
+  clock_.dt_next = clock_.dt_initial = stableStep();
+}
+
+void Integrator::restore(const Clock& clock) {
+  body_points_ = bodyRanges(model_.points.body, model_.points.owned, model_.bodies.size());
+  clock_ = clock;
+  volume_rate_.assign(static_cast<std::size_t>(model_.points.owned), 0.0);
+  search();
+  forces();
+}
+
+void Integrator::step() {
+  const double dt = std::min(clock_.dt_next, settings_.solver.end_time - clock_.time);
+  KESSLER_VERIFY(dt > 0.0, "step called after the end time");
+  PointStore& points = model_.points;
+  try {
+    {
+      ScopedPhase phase(timers_, "point update");
+      const double dt_kick = 0.5 * (clock_.dt_last + dt);
+#pragma omp parallel for schedule(static)
+      for (LocalIndex p = 0; p < points.owned; ++p) {
+        points.v[p] += dt_kick * acceleration_[p];
+        imposeBoundaries(model_.constrained[p], model_.prescribed_v[p], settings_.walls, points.x[p], dt, points.v[p]);
+      }
+      deform(dt);
+    }
+    {
+      ScopedPhase phase(timers_, "constitutive");
+      updateMaterials(dt);
+    }
+    {
+      ScopedPhase phase(timers_, "erosion");
+      erosion_.apply(model_);
+      release_.apply(model_);
+    }
+    search();
+    forces();
+  } catch (const NumericalError& e) {
+    throw NumericalError(fmt::format("step {}, t = {:.6g} s: {}", clock_.steps + 1, clock_.time, e.what()));
+  }
+  clock_.time += dt;
+  clock_.dt_last = dt;
+  ++clock_.steps;
+  ScopedPhase phase(timers_, "time step");
+  clock_.dt_next = stableStep();
+}
+
+double Integrator::smoothingLength(LocalIndex p) const {
+  const PointStore& points = model_.points;
+  const double h0 = settings_.sph.smoothing * points.spacing0[p];
+  return std::clamp(settings_.sph.smoothing * points.spacing(p), 0.5 * h0, 2.0 * h0);
+}
+
+double Integrator::meanNeighbours() const {
+  const LocalIndex n = model_.points.owned;
+  return n > 0 ? static_cast<double>(pairs_.size()) / n : 0.0;
+}
+
+// The pairs at the current positions; which take part in the deformation and the stress (those
+// within a body always; across bodies, or with debris, while the two approach: bodies in contact
+// push and shear each other as one body, and part freely, never pulled together); the kernel
+// correction B_i over the active pairs.
+void Integrator::search() {
+  ScopedPhase phase(timers_, "search");
+  PointStore& points = model_.points;
+  const auto n = static_cast<std::size_t>(points.owned);
+  h_.resize(n);
+  for (std::size_t p = 0; p < n; ++p) h_[p] = smoothingLength(static_cast<LocalIndex>(p));
+  pairs_.build(points.x, h_, points.owned, settings_.symmetry_axes);
+  correction_.resize(n);
+  LocalIndex uncorrected = 0;
+#pragma omp parallel for schedule(static) reduction(+ : uncorrected)
+  for (LocalIndex i = 0; i < points.owned; ++i) {
+    Mat3 moment = Mat3::Zero();
+    int struck = -1;
+    for (Index e = pairs_.offset[i]; e < pairs_.offset[i + 1]; ++e) {
+      const LocalIndex j = pairs_.other[e];
+      const std::uint8_t m = pairs_.mirror[e];
+      const Vec3 d = points.x[i] - reflect(points.x[j], m);
+      const bool within = points.body[i] == points.body[j] && !points.debris(i) && !points.debris(j);
+      const bool approaching = (points.v[i] - reflect(points.v[j], m)).dot(d) < 0.0;
+      pairs_.active[e] = within || approaching;
+      if (!pairs_.active[e]) continue;
+      moment.noalias() -= points.volume[j] * d * pairs_.gradient[e].transpose();
+      if (points.debris(i) && !points.debris(j)) struck = points.body[j];
+    }
+    // A debris particle that meets a body strikes it (the rear-wall analysis counts those).
+    if (struck >= 0) points.strike(i, struck);
+    // The correction where the moment is well conditioned: its smallest singular value at least a
+    // tenth of an interior particle's (1), as at a surface, an edge or a corner of a body.
+    if (!points.debris(i) && moment.allFinite() && smallestRootEigenvalue(moment.transpose() * moment) > 0.1) {
+      correction_[i] = moment.inverse();
+    } else {
+      correction_[i].setIdentity();
+      uncorrected += points.debris(i) ? 0 : 1;
+    }
+  }
+  uncorrected_ = uncorrected;
+}
+
+// The forces at the current state (docs/theory.md §10): the stress's over the active pairs, Monaghan's
+// viscosity over the pairs that approach, and the artificial stress within intact material.
+void Integrator::forces() {
+  ScopedPhase phase(timers_, "assembly");
+  const PointStore& points = model_.points;
+  const SphOptions& o = settings_.sph;
+  const auto n = static_cast<std::size_t>(points.owned);
+  acceleration_.resize(n);
+  viscous_power_.resize(n);
+  signal_.resize(n);
+  // Per particle: sigma B^T, and the artificial stress R (tensile principal stresses only).
+  std::vector<Mat3> stress_b(n), artificial(n);
+#pragma omp parallel for schedule(static)
+  for (LocalIndex p = 0; p < points.owned; ++p) {
+    stress_b[p] = points.stress[p] * correction_[p].transpose();
+    artificial[p].setZero();
+    if (points.broken[p] || o.artificial_stress <= 0.0) continue;
+    Eigen::SelfAdjointEigenSolver<Mat3> principal;
+    principal.computeDirect(points.stress[p]);
+    const double rho2 = points.density(p) * points.density(p);
+    for (int a = 0; a < 3; ++a) {
+      const double s = principal.eigenvalues()[a];
+      if (s > 0.0) {
+        const Vec3 e = principal.eigenvectors().col(a);
+        artificial[p].noalias() -= o.artificial_stress * s / rho2 * e * e.transpose();
+      }
+    }
+  }
+#pragma omp parallel for schedule(dynamic, 256)
+  for (LocalIndex i = 0; i < points.owned; ++i) {
+    Vec3 f = Vec3::Zero();
+    double power = 0.0, signal = 0.0;
+    const double rho_i = points.density(i), c_i = points.debris(i) ? 0.0 : points.sound_speed[i];
+    for (Index e = pairs_.offset[i]; e < pairs_.offset[i + 1]; ++e) {
+      const LocalIndex j = pairs_.other[e];
+      const std::uint8_t m = pairs_.mirror[e];
+      const Vec3& grad = pairs_.gradient[e];
+      if (pairs_.active[e]) {
+        const Mat3 sum = stress_b[i] + reflect(stress_b[j], m);
+        f.noalias() += points.volume[i] * points.volume[j] * (sum * grad);
+        if (o.artificial_stress > 0.0 && points.body[i] == points.body[j] && !points.broken[i] && !points.broken[j]) {
+          const double h_ij = 0.5 * (h_[i] + h_[j]);
+          const double reference = CubicSpline::value(0.5 * (points.spacing(i) + points.spacing(j)), h_ij);
+          const double ratio = reference > 0.0 ? std::min(pairs_.kernel[e] / reference, 1.0) : 0.0;
+          const double fn = std::pow(ratio, o.artificial_stress_exponent);
+          f.noalias() += points.mass[i] * points.mass[j] * fn * ((artificial[i] + reflect(artificial[j], m)) * grad);
+        }
+      }
+      const Vec3 d = points.x[i] - reflect(points.x[j], m);
+      const Vec3 v = points.v[i] - reflect(points.v[j], m);
+      const double approach = v.dot(d);
+      if (approach >= 0.0) continue;
+      const double h_ij = 0.5 * (h_[i] + h_[j]);
+      const double mu = h_ij * approach / (d.squaredNorm() + 0.01 * h_ij * h_ij);
+      const double c_j = points.debris(j) ? 0.0 : points.sound_speed[j];
+      const double rho = 0.5 * (rho_i + points.density(j));
+      const double alpha = 0.5 * (model_.viscosity[i] + model_.viscosity[j]);
+      const double viscosity = alpha * (-0.5 * (c_i + c_j) * mu + o.viscosity_ratio * mu * mu) / rho;
+      const double mm = points.mass[i] * points.mass[j];
+      f.noalias() -= mm * viscosity * grad;
+      power += 0.5 * mm * viscosity * v.dot(grad);
+      signal = std::max(signal, -mu);
+    }
+    acceleration_[i] = f / points.mass[i];
+    viscous_power_[i] = power;
+    signal_[i] = signal;
+  }
+}
+
+// Step 2: each particle's deformation over the step from the kicked velocities, then the drift
+// (two passes: the first reads the volumes and velocities that the second changes).
+void Integrator::deform(double dt) {
+  PointStore& points = model_.points;
+  volume_rate_.resize(static_cast<std::size_t>(points.owned));
+  LocalIndex bad = points.owned;
+#pragma omp parallel for schedule(static) reduction(min : bad)
+  for (LocalIndex i = 0; i < points.owned; ++i) {
+    points.dF[i].setIdentity();
+    if (points.debris(i)) continue;
+    Mat3 gradient = Mat3::Zero();
+    for (Index e = pairs_.offset[i]; e < pairs_.offset[i + 1]; ++e) {
+      if (!pairs_.active[e]) continue;
+      const LocalIndex j = pairs_.other[e];
+      gradient.noalias() +=
+          points.volume[j] * (reflect(points.v[j], pairs_.mirror[e]) - points.v[i]) * pairs_.gradient[e].transpose();
+    }
+    const Mat3 L = gradient * correction_[i];
+    switchViscosity(i, L.trace(), dt);
+    const Mat3 half = 0.5 * dt * L;
+    const Mat3 dF = (Mat3::Identity() - half).inverse() * (Mat3::Identity() + half);
+    const double J = dF.determinant();
+    if (J > 0.0 && std::isfinite(J))
+      points.dF[i] = dF;
+    else if (points.failed(i))
+      points.carrier[i] = -1;  // failed material crushed through itself is debris (as in OTM, docs/theory.md §8)
+    else
+      bad = std::min(bad, i);
+  }
+  if (bad < points.owned) failAtPoint(bad, "volume inverted or collapsed over the step (det dF <= 0)");
+#pragma omp parallel for schedule(static)
+  for (LocalIndex i = 0; i < points.owned; ++i) {
+    points.x[i] += dt * points.v[i];
+    if (points.debris(i)) {
+      points.stress[i].setZero();
+      points.viscous_pressure[i] = 0.0;
+      volume_rate_[i] = 0.0;
+      continue;
+    }
+    const double J = points.dF[i].determinant();
+    points.F[i] = points.dF[i] * points.F[i];
+    points.volume[i] *= J;
+    volume_rate_[i] = std::log(J) / dt;
+  }
+}
+
+// Morris & Monaghan's switch (J. Comput. Phys. 136:41, 1997): d alpha/dt = -(alpha - alpha_min) / tau
+// + max(-div v, 0) (alpha_max - alpha), tau = h / (decay c), integrated implicitly over the step (so
+// alpha stays within [alpha_min, alpha_max] for any step).
+void Integrator::switchViscosity(LocalIndex p, double div_v, double dt) {
+  const SphOptions& o = settings_.sph;
+  const PointStore& points = model_.points;
+  const double decay = o.viscosity_decay * points.sound_speed[p] / h_[p];  // 1 / tau
+  const double source = std::max(-div_v, 0.0);
+  double& alpha = model_.viscosity[p];
+  alpha = (alpha + dt * (decay * o.viscosity_min + source * o.viscosity_max)) / (1.0 + dt * (decay + source));
+}
+
+void Integrator::heatPoints(const std::vector<double>& heat) {
+  PointStore& points = model_.points;
+  for (std::size_t b = 0; b < model_.bodies.size(); ++b) {
+    const LocalIndex begin = body_points_[b].begin, end = body_points_[b].end;
+    if (end > begin)
+      model_.materials[model_.bodies[b].material]->heat(
+          points, begin, end,
+          std::span<const double>(heat).subspan(static_cast<std::size_t>(begin),
+                                                static_cast<std::size_t>(end - begin)));
+  }
+}
+
+void Integrator::updateMaterials(double dt) {
+  PointStore& points = model_.points;
+  if (dt > 0.0) {
+    heat_.resize(static_cast<std::size_t>(points.owned));
+    for (LocalIndex p = 0; p < points.owned; ++p) heat_[p] = viscous_power_[p] * dt;
+    heatPoints(heat_);
+  }
+  // SPH's viscosity is its own: the laws' bulk viscosity stays off (limiter 1).
+  std::fill(points.viscosity_limiter.begin(), points.viscosity_limiter.end(), 1.0);
+  try {
+    for (std::size_t b = 0; b < model_.bodies.size(); ++b)
+      model_.materials[model_.bodies[b].material]->update(points, body_points_[b].begin, body_points_[b].end, dt);
+  } catch (const PointError& e) {
+    failAtPoint(static_cast<LocalIndex>(e.point()), e.what());
+  }
+  LocalIndex bad = points.owned;
+#pragma omp parallel for schedule(static) reduction(min : bad)
+  for (LocalIndex p = 0; p < points.owned; ++p)
+    if (!points.stress[p].allFinite() || !std::isfinite(points.energy[p]) ||
+        !(points.debris(p) || points.sound_speed[p] >= 0.0))
+      bad = std::min(bad, p);
+  if (bad < points.owned) failAtPoint(bad, "the material update gave a non-finite stress, energy or sound speed");
+}
+
+// Monaghan's stable step (Monaghan, Annu. Rev. Astron. Astrophys. 30:543, 1992):
+// dt = cfl min_i h_i / (c_i + 1.2 (alpha c_i + beta mu_i)), mu_i the largest viscous signal of its
+// pairs, and no particle's volume changing by more than cfl/3 in a step (as OTM's,
+// solver/common/stable_step.hpp).
+double Integrator::stableStep() const {
+  const PointStore& points = model_.points;
+  const SphOptions& o = settings_.sph;
+  double dt = std::numeric_limits<double>::infinity();
+#pragma omp parallel for schedule(static) reduction(min : dt)
+  for (LocalIndex p = 0; p < points.owned; ++p) {
+    const double c = points.debris(p) ? 0.0 : points.sound_speed[p];
+    // With the largest coefficients: a particle's alpha may rise within the step.
+    const double signal = c + 1.2 * o.viscosity_max * (c + o.viscosity_ratio * signal_[p]);
+    if (signal > 0.0) dt = std::min(dt, h_[p] / signal);
+    if (volume_rate_[p] != 0.0) dt = std::min(dt, 1.0 / (3.0 * std::abs(volume_rate_[p])));
+  }
+  KESSLER_VERIFY(
+      std::isfinite(dt) && dt > 0.0,
+      "no stable time step: every particle is debris or at rest without a sound speed, or the model is empty");
+  return settings_.solver.cfl * dt;
+}
+
+Energies Integrator::energies() const {
+  return pointEnergies(model_.points, 0.0);
+}
+
+void Integrator::failAtPoint(LocalIndex p, const std::string& what) const {
+  const PointStore& points = model_.points;
+  const Vec3& x = points.x[p];
+  throw NumericalError(fmt::format("particle {} of body '{}' at ({:.6g}, {:.6g}, {:.6g}) m: {}", points.id[p],
+                                   model_.bodies[points.body[p]].name, x[0], x[1], x[2], what));
+}
+
+}  // namespace kessler::sph

@@ -1,0 +1,86 @@
+#pragma once
+// SPH's time step (docs/theory.md §10): an updated-Lagrangian, corrected and variationally
+// consistent SPH for solids (Bonet & Lok, CMAME 180:97, 1999), leapfrog in time.
+//   1. kick: v += dt_avg a (a from the last step's forces), prescribed components and walls;
+//   2. deformation: each particle's velocity gradient L over its active pairs with the corrected
+//      kernel gradient, dF = (I - dt L/2)^-1 (I + dt L/2), and the drift x += dt v;
+//   3. the material update (the shared laws, from F, dF and the volume), heated by the viscosity;
+//   4. eigenerosion and the release of failed particles as debris (solver/common/);
+//   5. pairs at the new positions, the kernel correction, the forces, the stable step.
+// The internal forces are those whose power is the stress power of the deformation of step 2,
+// f_i = sum_j V_i V_j (sigma_i B_i^T + sigma_j B_j^T) grad_i W_ij, so linear momentum is exact and
+// the work of the forces is what the material books; Monaghan's viscosity and artificial stress are
+// added pairwise.
+#include "core/timer.hpp"
+#include "solver/common/eigenerosion.hpp"
+#include "solver/common/energies.hpp"
+#include "solver/common/method.hpp"
+#include "solver/common/release.hpp"
+#include "solver/common/settings.hpp"
+#include "solver/common/walls.hpp"
+#include "solver/sph/model.hpp"
+#include "solver/sph/pairs.hpp"
+
+#include <vector>
+
+namespace kessler::sph {
+
+struct Settings {
+  SolverSettings solver;
+  SphOptions sph;
+  std::vector<RigidWall> walls;
+  std::vector<int> symmetry_axes;
+};
+
+class Integrator {
+ public:
+  Integrator(Model& model, const Settings& settings);
+  // The first forces and time step of a new run.
+  void initialise();
+  // A restored run: the clock, then the forces of the restored state (a pure function of it, so
+  // the run goes on as the one that wrote the checkpoint).
+  void restore(const Clock& clock);
+  void step();
+
+  bool finished() const { return clock_.time >= settings_.solver.end_time * (1.0 - 1e-12); }
+  const Clock& clock() const { return clock_; }
+  const Settings& settings() const { return settings_; }
+  const PhaseTimers& timers() const { return timers_; }
+  Energies energies() const;
+  // The smoothing length of particle p, m: `smoothing` times its current spacing, within a half and
+  // twice its reference one (expanded debris does not widen every search).
+  double smoothingLength(LocalIndex p) const;
+  double meanNeighbours() const;
+  // Particles whose kernel correction was singular at the last search (too few neighbours): they
+  // took the plain kernel gradient.
+  LocalIndex uncorrected() const { return uncorrected_; }
+
+ private:
+  void search();
+  void forces();
+  void deform(double dt);
+  void switchViscosity(LocalIndex p, double div_v, double dt);
+  void updateMaterials(double dt);
+  void heatPoints(const std::vector<double>& heat);
+  double stableStep() const;
+  [[noreturn]] void failAtPoint(LocalIndex p, const std::string& what) const;
+
+  Model& model_;
+  Settings settings_;
+  Clock clock_;
+  PhaseTimers timers_;
+  Pairs pairs_;
+  Eigenerosion erosion_;
+  DebrisRelease release_;
+  std::vector<IndexRange> body_points_;
+  std::vector<double> h_;              // smoothing lengths at the last search
+  std::vector<Mat3> correction_;       // B_i: the inverse of sum_j V_j (x_j - x_i) (x) grad_i W_ij
+  std::vector<Vec3> acceleration_;     // of the last forces
+  std::vector<double> viscous_power_;  // the viscosity's heating of each particle, W
+  std::vector<double> signal_;         // the largest viscous signal speed mu of each particle, m/s
+  std::vector<double> volume_rate_;    // ln J / dt of the last step
+  std::vector<double> heat_;
+  LocalIndex uncorrected_ = 0;
+};
+
+}  // namespace kessler::sph

@@ -1,0 +1,47 @@
+#pragma once
+// SPH as a Method (solver/common/method.hpp): its particles, its integrator and its health checks.
+#include "solver/common/method.hpp"
+#include "solver/common/point_diagnostics.hpp"
+#include "solver/common/problem.hpp"
+#include "solver/sph/integrator.hpp"
+#include "solver/sph/model.hpp"
+
+namespace kessler::sph {
+
+// SPH's settings for a problem.
+Settings settingsFor(const Problem& problem);
+
+class SphMethod final : public Method {
+ public:
+  // One process only: SPH does not yet run on several ranks (docs/parallel.md).
+  SphMethod(Model model, const Settings& settings);
+  SphMethod(const SphMethod&) = delete;
+  SphMethod& operator=(const SphMethod&) = delete;
+
+  const char* name() const override { return "sph"; }
+  void initialise() override { integrator_.initialise(); }
+  void step() override { integrator_.step(); }
+  void check(double initial_total_energy) override;
+  bool finished() const override { return integrator_.finished(); }
+  double endTime() const override { return integrator_.settings().solver.end_time; }
+  Clock clock() const override { return integrator_.clock(); }
+  Energies energies() const override { return integrator_.energies(); }
+  const PhaseTimers& timers() const override { return integrator_.timers(); }
+  const ParticleState& state() const override { return model_; }
+  NodeCloud nodes() const override { return {}; }
+  std::vector<std::pair<std::string, double>> sizes() const override;
+  std::vector<std::string> notes() const override;
+  double stepLength(LocalIndex p) const override { return integrator_.smoothingLength(p); }
+  void save(StateWriter& out) const override;
+  void load(const StateReader& in) override;
+
+  const Model& model() const { return model_; }
+  const Integrator& integrator() const { return integrator_; }
+
+ private:
+  Model model_;
+  Integrator integrator_;  // holds a reference to model_
+  PointDiagnostics diagnostics_;
+};
+
+}  // namespace kessler::sph

@@ -1,0 +1,55 @@
+// The particle lattice of SPH's finite-element reconstruction (geometry/lattice.hpp).
+#include "geometry/lattice.hpp"
+#include "core/error.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <numeric>
+
+namespace kessler::geometry {
+namespace {
+
+double total(const std::vector<double>& v) {
+  return std::accumulate(v.begin(), v.end(), 0.0);
+}
+
+TEST(Lattice, BoxIsFilledExactlyWithWholeElements) {
+  const Box box{Vec3(-1e-3, 0, 0), Vec3(2e-3, 1e-3, 4.1e-3)};
+  const Lattice l = fillLattice(box, 0.5e-3, {});
+  // 6 x 2 x 8 elements (4.1 mm / 0.5 mm rounds to 8, of 0.5125 mm).
+  ASSERT_EQ(l.particles.points.size(), 96u);
+  EXPECT_NEAR(total(l.particles.volumes), 3e-3 * 1e-3 * 4.1e-3, 1e-20);
+  EXPECT_NEAR(l.cell[2], 4.1e-3 / 8, 1e-15);
+  // Centroids half an element inside the faces.
+  EXPECT_NEAR(l.particles.points.front()[0], -1e-3 + 0.25e-3, 1e-15);
+  // Face neighbours: (5*2*8) + (6*1*8) + (6*2*7) pairs.
+  EXPECT_EQ(l.particles.adjacency.size(), 80u + 48u + 84u);
+}
+
+TEST(Lattice, SphereHoldsItsVolumeAndSymmetryPlanesAreElementFaces) {
+  const Sphere sphere{Vec3(0, 0, 5e-3), 5e-3};
+  const Lattice whole = fillLattice(sphere, 0.5e-3, {});
+  const double v = 4.0 / 3.0 * std::numbers::pi * 125e-9;
+  EXPECT_NEAR(total(whole.particles.volumes) / v, 1.0, 1e-12);
+  const Lattice quarter = fillLattice(sphere, 0.5e-3, {0, 1});
+  EXPECT_NEAR(total(quarter.particles.volumes) / (v / 4), 1.0, 1e-12);
+  for (const Vec3& x : quarter.particles.points) {
+    EXPECT_GT(x[0], 0.0);
+    // Centroids at (i + 1/2) h from the plane x = 0.
+    EXPECT_NEAR(std::fmod(x[0] / 0.5e-3, 1.0), 0.5, 1e-9);
+  }
+  EXPECT_NEAR(static_cast<double>(quarter.particles.points.size()),
+              static_cast<double>(whole.particles.points.size()) / 4.0, 1.0);
+}
+
+TEST(Lattice, RefusesABodyThinnerThanTwoElements) {
+  const Box plate{Vec3(0, 0, 0), Vec3(10e-3, 10e-3, 0.9e-3)};
+  EXPECT_THROW(fillLattice(plate, 0.5e-3, {}), InputError);
+  EXPECT_NO_THROW(fillLattice(plate, 0.45e-3, {}));
+  EXPECT_THROW(fillLattice(MeshFile{"x.msh", 1.0}, 1e-3, {}), InputError);
+}
+
+}  // namespace
+}  // namespace kessler::geometry
