@@ -52,6 +52,56 @@ double clippedVolume(const Shape& shape, const BoundingBox& box, const BoundingB
 
 }  // namespace
 
+namespace {
+
+// The elements (i, j, k) < n of edge `cell` from `origin` whose centroid `keep` accepts.
+template <class Keep>
+Lattice fill(const Vec3& origin, const Vec3& cell, const std::array<int, 3>& n, Keep&& keep) {
+  KESSLER_VERIFY(static_cast<double>(n[0]) * n[1] * n[2] < static_cast<double>(std::numeric_limits<LocalIndex>::max()),
+                 "a lattice of {} x {} x {} elements exceeds 32-bit indices", n[0], n[1], n[2]);
+  Lattice lattice;
+  lattice.origin = origin;
+  lattice.cell = cell;
+  std::vector<LocalIndex> at(static_cast<std::size_t>(n[0]) * n[1] * n[2], -1);
+  const auto flat = [&](int i, int j, int k) { return (static_cast<std::size_t>(k) * n[1] + j) * n[0] + i; };
+  Discretisation& d = lattice.particles;
+  const double element_volume = cell.prod();
+  const double spacing = std::cbrt(element_volume);
+  for (int k = 0; k < n[2]; ++k)
+    for (int j = 0; j < n[1]; ++j)
+      for (int i = 0; i < n[0]; ++i) {
+        const Vec3 c = origin + (Vec3(i, j, k) + Vec3::Constant(0.5)).cwiseProduct(cell);
+        if (!keep(c)) continue;
+        at[flat(i, j, k)] = static_cast<LocalIndex>(d.points.size());
+        d.points.push_back(c);
+        d.volumes.push_back(element_volume);
+        d.spacings.push_back(spacing);
+        lattice.element.push_back({i, j, k});
+      }
+  for (std::size_t p = 0; p < d.points.size(); ++p) {
+    const auto [i, j, k] = lattice.element[p];
+    const std::array<std::array<int, 3>, 3> ahead{{{i + 1, j, k}, {i, j + 1, k}, {i, j, k + 1}}};
+    for (const auto& [a, b, c] : ahead) {
+      if (a >= n[0] || b >= n[1] || c >= n[2]) continue;
+      const LocalIndex q = at[flat(a, b, c)];
+      if (q >= 0) d.adjacency.push_back({static_cast<LocalIndex>(p), q});
+    }
+  }
+  return lattice;
+}
+
+}  // namespace
+
+Lattice fillBoxLattice(const Box& box, const std::array<int, 3>& cells) {
+  const Vec3 extent = box.max - box.min;
+  for (int a = 0; a < 3; ++a)
+    if (cells[a] < 2 || !(extent[a] > 0.0))
+      throw InputError(fmt::format("a structured box needs at least two cells along each axis, got {} x {} x {}",
+                                   cells[0], cells[1], cells[2]));
+  return fill(box.min, extent.cwiseQuotient(Vec3(cells[0], cells[1], cells[2])), cells,
+              [](const Vec3&) { return true; });
+}
+
 Lattice fillLattice(const Shape& shape, double size, const std::vector<int>& symmetry_axes) {
   if (std::holds_alternative<MeshFile>(shape))
     throw InputError("a particle lattice fills an analytic shape (box, sphere, cylinder), not a mesh file");
@@ -66,54 +116,29 @@ Lattice fillLattice(const Shape& shape, double size, const std::vector<int>& sym
   for (const int a : symmetry_axes) clipped.min[a] = std::max(clipped.min[a], 0.0);
   if (clipped.empty()) throw InputError(fmt::format("the {} lies wholly behind a symmetry plane", kindName(shape)));
 
-  Lattice lattice;
-  lattice.origin = clipped.min;
   std::array<int, 3> n{};
+  Vec3 cell;
   const bool is_box = std::holds_alternative<Box>(shape);
   for (int a = 0; a < 3; ++a) {
     const double extent = clipped.max[a] - clipped.min[a];
     if (is_box) {
+      // A whole number of elements, as near the size as fits.
       n[a] = std::max(1, static_cast<int>(std::lround(extent / size)));
-      lattice.cell[a] = extent / n[a];
+      cell[a] = extent / n[a];
     } else {
       // Cubes from the symmetry plane or the shape's edge.
       n[a] = std::max(1, static_cast<int>(std::ceil(extent / size - 1e-9)));
-      lattice.cell[a] = size;
+      cell[a] = size;
     }
   }
-  KESSLER_VERIFY(static_cast<double>(n[0]) * n[1] * n[2] < static_cast<double>(std::numeric_limits<LocalIndex>::max()),
-                 "a lattice of {} x {} x {} elements exceeds 32-bit indices", n[0], n[1], n[2]);
-  std::vector<LocalIndex> at(static_cast<std::size_t>(n[0]) * n[1] * n[2], -1);
-  const auto flat = [&](int i, int j, int k) { return (static_cast<std::size_t>(k) * n[1] + j) * n[0] + i; };
+  Lattice lattice = fill(clipped.min, cell, n, [&](const Vec3& c) { return is_box || contains(shape, c); });
   Discretisation& d = lattice.particles;
-  const double element_volume = lattice.cell.prod();
-  const double spacing = std::cbrt(element_volume);
-  for (int k = 0; k < n[2]; ++k)
-    for (int j = 0; j < n[1]; ++j)
-      for (int i = 0; i < n[0]; ++i) {
-        const Vec3 c = lattice.origin + (Vec3(i, j, k) + Vec3::Constant(0.5)).cwiseProduct(lattice.cell);
-        if (!is_box && !contains(shape, c)) continue;
-        at[flat(i, j, k)] = static_cast<LocalIndex>(d.points.size());
-        d.points.push_back(c);
-        d.volumes.push_back(element_volume);
-        d.spacings.push_back(spacing);
-        lattice.element.push_back({i, j, k});
-      }
   if (d.points.empty())
     throw InputError(fmt::format("no element of {:.4g} mm has its centre inside the {}", 1e3 * size, kindName(shape)));
   if (!is_box) {
     const double scale =
-        clippedVolume(shape, box, clipped, symmetry_axes) / (static_cast<double>(d.points.size()) * element_volume);
+        clippedVolume(shape, box, clipped, symmetry_axes) / (static_cast<double>(d.points.size()) * cell.prod());
     for (double& v : d.volumes) v *= scale;
-  }
-  for (std::size_t p = 0; p < d.points.size(); ++p) {
-    const auto [i, j, k] = lattice.element[p];
-    const std::array<std::array<int, 3>, 3> ahead{{{i + 1, j, k}, {i, j + 1, k}, {i, j, k + 1}}};
-    for (const auto& [a, b, c] : ahead) {
-      if (a >= n[0] || b >= n[1] || c >= n[2]) continue;
-      const LocalIndex q = at[flat(a, b, c)];
-      if (q >= 0) d.adjacency.push_back({static_cast<LocalIndex>(p), q});
-    }
   }
   return lattice;
 }

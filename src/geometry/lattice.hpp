@@ -34,4 +34,7 @@ struct Lattice {
 // less than two elements: one layer of particles is not a body.
 Lattice fillLattice(const Shape& shape, double size, const std::vector<int>& symmetry_axes);
 
+// A box of exactly `cells` elements along each axis (at least two; no symmetry clipping).
+Lattice fillBoxLattice(const Box& box, const std::array<int, 3>& cells);
+
 }  // namespace kessler::geometry

@@ -8,4 +8,12 @@ namespace kessler::geometry {
 
 TetMesh structuredBoxMesh(const Box& box, const std::array<int, 3>& cells);
 
+// A box of n[0] x n[1] x n[2] cells, which each method discretises its own way (OTM: the Kuhn tets
+// above; SPH: one particle per cell, geometry/lattice.hpp): verification problems with a controlled
+// resolution that every method runs.
+struct StructuredBox {
+  Box box;
+  std::array<int, 3> cells{1, 1, 1};
+};
+
 }  // namespace kessler::geometry

@@ -18,7 +18,7 @@ BodySetup boxBody(const std::string& name, const geometry::Box& box, const std::
   BodySetup body;
   body.name = name;
   body.material = material;
-  body.mesh = geometry::discretise(geometry::structuredBoxMesh(box, cells));
+  body.mesh = geometry::StructuredBox{box, cells};
   body.velocity = velocity;
   return body;
 }

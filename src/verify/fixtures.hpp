@@ -13,7 +13,7 @@ namespace kessler::verify {
 // An aluminium-like neo-Hookean solid: rho 2700 kg/m^3, E 70 GPa, nu 0.33.
 std::shared_ptr<const NeoHookean> elasticAluminium();
 
-// A box body meshed with the structured Kuhn triangulation.
+// A box body of n x m x k cells (geometry::StructuredBox: OTM's Kuhn tets, SPH's lattice).
 BodySetup boxBody(const std::string& name, const geometry::Box& box, const std::array<int, 3>& cells,
                   const Vec3& velocity, const MaterialPtr& material);
 

@@ -52,11 +52,19 @@ TaylorBarResult runTaylorBar(double mesh_size, double cfl, bool volume_averaging
     r.length = std::max(r.length, x[2]);
     if (x[2] < 0.25 * mesh_size) r.footprint_radius = std::max(r.footprint_radius, std::hypot(x[0], x[1]));
   }
+  const PointStore& points = method->state().points;
+  // A method without nodes (SPH): its particles' elements, half a spacing beyond their centres.
+  if (nodes.owned == 0)
+    for (LocalIndex q = 0; q < points.owned; ++q) {
+      const Vec3& x = points.x[q];
+      const double half = 0.5 * points.spacing(q);
+      r.length = std::max(r.length, x[2] + half);
+      if (x[2] < 2.0 * half) r.footprint_radius = std::max(r.footprint_radius, std::hypot(x[0], x[1]) + half);
+    }
   const Clock clock = method->clock();
   r.steps = clock.steps;
   r.dt_initial = clock.dt_initial;
   r.dt_final = clock.dt_next;
-  const PointStore& points = method->state().points;
   r.points = points.owned;
   for (LocalIndex q = 0; q < points.owned; ++q)
     if (points.x[q][2] < mesh_size)

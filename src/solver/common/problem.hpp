@@ -4,6 +4,7 @@
 // discretisation from it (OTM: nodes at the mesh's vertices, material points at its tets'
 // barycentres). The deck gives one (app/methods.cpp), and so does each verification problem.
 #include "geometry/mesh.hpp"
+#include "geometry/structured_mesh.hpp"
 #include "material/material.hpp"
 #include "solver/common/particle_state.hpp"
 #include "solver/common/settings.hpp"
@@ -19,9 +20,9 @@ namespace kessler {
 struct BodySetup {
   std::string name;
   MaterialPtr material;
-  // What to mesh (clipped by the problem's symmetry planes), or a tet mesh already discretised
-  // (which symmetry planes do not touch).
-  std::variant<geometry::MeshRequest, geometry::Discretisation> mesh;
+  // What to mesh (clipped by the problem's symmetry planes), a tet mesh already discretised, or a
+  // structured box that each method discretises its own way (neither of which symmetry planes touch).
+  std::variant<geometry::MeshRequest, geometry::Discretisation, geometry::StructuredBox> mesh;
   Vec3 velocity = Vec3::Zero();
   // If set, the initial velocity at each position instead of `velocity`.
   std::function<Vec3(const Vec3&)> velocity_field;

@@ -2,6 +2,7 @@
 
 #include "core/error.hpp"
 #include "core/log.hpp"
+#include "geometry/structured_mesh.hpp"
 #include "solver/otm/morton_order.hpp"
 
 #include <cmath>
@@ -86,13 +87,17 @@ Model buildModel(const Problem& problem) {
   for (const BodySetup& setup : problem.bodies) {
     const LocalIndex first_node = model.nodes.size(), first_point = model.points.size();
     const auto* request = std::get_if<geometry::MeshRequest>(&setup.mesh);
+    const auto* structured = std::get_if<geometry::StructuredBox>(&setup.mesh);
     geometry::Discretisation meshed;
     if (request != nullptr) {
       geometry::MeshRequest clipped = *request;
       clipped.symmetry_axes = problem.symmetry_axes;
       meshed = geometry::discretise(geometry::meshShape(clipped));
+    } else if (structured != nullptr) {
+      meshed = geometry::discretise(geometry::structuredBoxMesh(structured->box, structured->cells));
     }
-    const geometry::Discretisation& disc = request != nullptr ? meshed : std::get<geometry::Discretisation>(setup.mesh);
+    const geometry::Discretisation& disc =
+        request != nullptr || structured != nullptr ? meshed : std::get<geometry::Discretisation>(setup.mesh);
     const int body = addBody(model, setup.name, setup.material, disc, setup.velocity);
     if (setup.velocity_field) {
       for (LocalIndex a = first_node; a < model.nodes.size(); ++a)

@@ -102,9 +102,9 @@ double Integrator::meanNeighbours() const {
 }
 
 // The pairs at the current positions; which take part in the deformation and the stress (those
-// within a body always; across bodies, or with debris, while the two approach: bodies in contact
-// push and shear each other as one body, and part freely, never pulled together); the kernel
-// correction B_i over the active pairs.
+// within a body always; across bodies, or with debris, while the two approach or are both under
+// pressure: bodies in contact push and shear each other as one body, and part freely once their
+// pressure is released, never pulled together); the kernel correction B_i over the active pairs.
 void Integrator::search() {
   ScopedPhase phase(timers_, "search");
   PointStore& points = model_.points;
@@ -124,7 +124,8 @@ void Integrator::search() {
       const Vec3 d = points.x[i] - reflect(points.x[j], m);
       const bool within = points.body[i] == points.body[j] && !points.debris(i) && !points.debris(j);
       const bool approaching = (points.v[i] - reflect(points.v[j], m)).dot(d) < 0.0;
-      pairs_.active[e] = within || approaching;
+      const bool pressed = points.stress[i].trace() < 0.0 && points.stress[j].trace() < 0.0;
+      pairs_.active[e] = within || approaching || pressed;
       if (!pairs_.active[e]) continue;
       moment.noalias() -= points.volume[j] * d * pairs_.gradient[e].transpose();
       if (points.debris(i) && !points.debris(j)) struck = points.body[j];

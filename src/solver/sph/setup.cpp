@@ -14,6 +14,13 @@ namespace {
 
 // The particles of one body: a lattice for an analytic shape, the tets' barycentres otherwise.
 geometry::Discretisation particlesOf(const BodySetup& setup, const std::vector<int>& symmetry_axes) {
+  if (const auto* structured = std::get_if<geometry::StructuredBox>(&setup.mesh)) {
+    try {
+      return geometry::fillBoxLattice(structured->box, structured->cells).particles;
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("body '{}': {}", setup.name, e.what()));
+    }
+  }
   const auto* request = std::get_if<geometry::MeshRequest>(&setup.mesh);
   if (request == nullptr || std::holds_alternative<geometry::MeshFile>(request->shape)) {
     geometry::Discretisation tets;

@@ -1,9 +1,9 @@
 #pragma once
 // SPH's particles for a problem (docs/theory.md §10). A body meshed from an analytic shape is filled
 // with a lattice of hexahedral elements, one particle at each centroid (geometry/lattice.hpp): the
-// particle spacing is the deck's mesh_size. A body given as a tet mesh (a mesh file, a verification
-// problem's structured box) takes one particle per tet, at its barycentre, as OTM's points, with
-// the cube root of its volume as its spacing.
+// particle spacing is the deck's mesh_size; a structured box, one particle per cell. A body given
+// as a tet mesh (a mesh file, a verification problem's unstructured slab) takes one particle per
+// tet, at its barycentre, as OTM's points, with the cube root of its volume as its spacing.
 #include "solver/common/problem.hpp"
 #include "solver/sph/model.hpp"
 

@@ -44,6 +44,14 @@ TEST(Lattice, SphereHoldsItsVolumeAndSymmetryPlanesAreElementFaces) {
               static_cast<double>(whole.particles.points.size()) / 4.0, 1.0);
 }
 
+TEST(Lattice, StructuredBoxHasOneParticlePerCell) {
+  const Lattice l = fillBoxLattice(Box{Vec3::Zero(), Vec3(2e-3, 2e-3, 9e-3)}, {2, 2, 6});
+  ASSERT_EQ(l.particles.points.size(), 24u);
+  EXPECT_NEAR(l.cell[2], 1.5e-3, 1e-15);
+  EXPECT_NEAR(total(l.particles.volumes), 36e-9, 1e-20);
+  EXPECT_THROW(fillBoxLattice(Box{Vec3::Zero(), Vec3(1e-3, 1e-3, 1e-3)}, {1, 2, 2}), InputError);
+}
+
 TEST(Lattice, RefusesABodyThinnerThanTwoElements) {
   const Box plate{Vec3(0, 0, 0), Vec3(10e-3, 10e-3, 0.9e-3)};
   EXPECT_THROW(fillLattice(plate, 0.5e-3, {}), InputError);
