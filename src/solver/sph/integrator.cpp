@@ -110,7 +110,11 @@ void Integrator::search() {
   PointStore& points = model_.points;
   const auto n = static_cast<std::size_t>(points.owned);
   h_.resize(n);
-  for (std::size_t p = 0; p < n; ++p) h_[p] = smoothingLength(static_cast<LocalIndex>(p));
+  spacing_.resize(n);
+  for (std::size_t p = 0; p < n; ++p) {
+    h_[p] = smoothingLength(static_cast<LocalIndex>(p));
+    spacing_[p] = points.spacing(static_cast<LocalIndex>(p));
+  }
   pairs_.build(points.x, h_, points.owned, settings_.symmetry_axes);
   correction_.resize(n);
   LocalIndex uncorrected = 0;
@@ -186,9 +190,10 @@ void Integrator::forces() {
         f.noalias() += points.volume[i] * points.volume[j] * (sum * grad);
         if (o.artificial_stress > 0.0 && points.body[i] == points.body[j] && !points.broken[i] && !points.broken[j]) {
           const double h_ij = 0.5 * (h_[i] + h_[j]);
-          const double reference = CubicSpline::value(0.5 * (points.spacing(i) + points.spacing(j)), h_ij);
+          const double reference = CubicSpline::value(0.5 * (spacing_[i] + spacing_[j]), h_ij);
           const double ratio = reference > 0.0 ? std::min(pairs_.kernel[e] / reference, 1.0) : 0.0;
-          const double fn = std::pow(ratio, o.artificial_stress_exponent);
+          double fn = 1.0;
+          for (int k = 0; k < o.artificial_stress_exponent; ++k) fn *= ratio;
           f.noalias() += points.mass[i] * points.mass[j] * fn * ((artificial[i] + reflect(artificial[j], m)) * grad);
         }
       }

@@ -74,6 +74,7 @@ class Integrator {
   DebrisRelease release_;
   std::vector<IndexRange> body_points_;
   std::vector<double> h_;              // smoothing lengths at the last search
+  std::vector<double> spacing_;        // and spacings
   std::vector<Mat3> correction_;       // B_i: the inverse of sum_j V_j (x_j - x_i) (x) grad_i W_ij
   std::vector<Vec3> acceleration_;     // of the last forces
   std::vector<double> viscous_power_;  // the viscosity's heating of each particle, W
