@@ -62,6 +62,7 @@ Lattice fill(const Vec3& origin, const Vec3& cell, const std::array<int, 3>& n, 
   Lattice lattice;
   lattice.origin = origin;
   lattice.cell = cell;
+  lattice.count = n;
   std::vector<LocalIndex> at(static_cast<std::size_t>(n[0]) * n[1] * n[2], -1);
   const auto flat = [&](int i, int j, int k) { return (static_cast<std::size_t>(k) * n[1] + j) * n[0] + i; };
   Discretisation& d = lattice.particles;
@@ -78,14 +79,17 @@ Lattice fill(const Vec3& origin, const Vec3& cell, const std::array<int, 3>& n, 
         d.spacings.push_back(spacing);
         lattice.element.push_back({i, j, k});
       }
+  // Elements that share a node: the 26 around each, each pair once (from the one earlier in order).
   for (std::size_t p = 0; p < d.points.size(); ++p) {
     const auto [i, j, k] = lattice.element[p];
-    const std::array<std::array<int, 3>, 3> ahead{{{i + 1, j, k}, {i, j + 1, k}, {i, j, k + 1}}};
-    for (const auto& [a, b, c] : ahead) {
-      if (a >= n[0] || b >= n[1] || c >= n[2]) continue;
-      const LocalIndex q = at[flat(a, b, c)];
-      if (q >= 0) d.adjacency.push_back({static_cast<LocalIndex>(p), q});
-    }
+    for (int dk = -1; dk <= 1; ++dk)
+      for (int dj = -1; dj <= 1; ++dj)
+        for (int di = -1; di <= 1; ++di) {
+          const int a = i + di, b = j + dj, c = k + dk;
+          if (a < 0 || b < 0 || c < 0 || a >= n[0] || b >= n[1] || c >= n[2]) continue;
+          const LocalIndex q = at[flat(a, b, c)];
+          if (q > static_cast<LocalIndex>(p)) d.adjacency.push_back({static_cast<LocalIndex>(p), q});
+        }
   }
   return lattice;
 }

@@ -13,13 +13,14 @@ namespace kessler::geometry {
 
 struct Lattice {
   // Particles (Discretisation: `points`, `volumes`, `spacings`, and `adjacency` for the pairs of
-  // elements that share a face; `nodes` empty).
+  // elements that share a node, a face, an edge or a corner; `nodes` empty).
   Discretisation particles;
   // Each particle's element (i, j, k) on the lattice, and the lattice: element (i, j, k) spans
   // origin + (i, j, k) * cell to origin + (i + 1, j + 1, k + 1) * cell.
   std::vector<std::array<int, 3>> element;
   Vec3 origin = Vec3::Zero();
   Vec3 cell = Vec3::Zero();
+  std::array<int, 3> count{0, 0, 0};  // elements along each axis (some may lie outside the shape)
 };
 
 // Fills an analytic shape, clipped to x[a] >= 0 on each of `symmetry_axes` (planes through the

@@ -47,6 +47,8 @@ std::unique_ptr<Method> makeMethod(const Problem& problem, ParticleState&& resto
     model.constrained.resize(model.points.x.size(), 0);  // SphMethod::load reads them
     model.prescribed_v.resize(model.points.x.size(), Vec3::Zero());
     model.viscosity.resize(model.points.x.size(), 0.0);
+    model.element.resize(model.points.x.size(), {-1, -1, -1});
+    model.lattices.resize(model.bodies.size());
     return std::make_unique<sph::SphMethod>(std::move(model), sph::settingsFor(problem));
   }
   otm::Model model;

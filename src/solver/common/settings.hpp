@@ -82,6 +82,10 @@ struct SphOptions {
   // 190:6641, 2001): epsilon and the exponent n of f = W(r) / W(spacing).
   double artificial_stress = 0.3;
   int artificial_stress_exponent = 4;
+  // The finite-element reconstruction (docs/theory.md §10): an element fails when the smallest
+  // scaled Jacobian of its corners falls below this (0.2: a corner sheared to 11.5 degrees, a
+  // shear strain of about 5, or inverted).
+  double element_min_quality = 0.2;
 };
 
 // A method's settings: what every method reads and each method's own block.

@@ -16,6 +16,7 @@ namespace kessler::sph {
 Integrator::Integrator(Model& model, const Settings& settings)
     : model_(model),
       settings_(settings),
+      reconstruction_(model),
       erosion_(settings.solver.erosion_radius),
       release_(settings.solver.erosion_radius) {
   KESSLER_VERIFY(settings.solver.cfl > 0.0 && settings.solver.cfl <= 1.0, "cfl must lie in (0, 1], got {}",
@@ -40,15 +41,19 @@ void Integrator::initialise() {
     ScopedPhase phase(timers_, "constitutive");
     updateMaterials(0.0);
   }
+  reconstruction_.rebuild(model_);
   search();
   forces();
   volume_rate_.assign(static_cast<std::size_t>(points.owned), 0.0);
   clock_.dt_next = clock_.dt_initial = stableStep();
 }
 
-void Integrator::restore(const Clock& clock) {
+void Integrator::restore(const Clock& clock, LocalIndex distorted) {
   body_points_ = bodyRanges(model_.points.body, model_.points.owned, model_.bodies.size());
   clock_ = clock;
+  distorted_ = distorted;
+  reconstruction_ = Reconstruction(model_);  // the restored elements
+  reconstruction_.rebuild(model_);
   volume_rate_.assign(static_cast<std::size_t>(model_.points.owned), 0.0);
   search();
   forces();
@@ -75,6 +80,8 @@ void Integrator::step() {
     }
     {
       ScopedPhase phase(timers_, "erosion");
+      reconstruction_.rebuild(model_);
+      distorted_ += reconstruction_.failDistorted(model_, settings_.sph.element_min_quality);
       erosion_.apply(model_);
       release_.apply(model_);
     }

@@ -20,6 +20,7 @@
 #include "solver/common/walls.hpp"
 #include "solver/sph/model.hpp"
 #include "solver/sph/pairs.hpp"
+#include "solver/sph/reconstruction.hpp"
 
 #include <vector>
 
@@ -37,9 +38,10 @@ class Integrator {
   Integrator(Model& model, const Settings& settings);
   // The first forces and time step of a new run.
   void initialise();
-  // A restored run: the clock, then the forces of the restored state (a pure function of it, so
-  // the run goes on as the one that wrote the checkpoint).
-  void restore(const Clock& clock);
+  // A restored run: the clock and the elements failed by distortion, then the nodes and forces of
+  // the restored state (a pure function of it, so the run goes on as the one that wrote the
+  // checkpoint).
+  void restore(const Clock& clock, LocalIndex distorted);
   void step();
 
   bool finished() const { return clock_.time >= settings_.solver.end_time * (1.0 - 1e-12); }
@@ -54,6 +56,9 @@ class Integrator {
   // Particles whose kernel correction was singular at the last search (too few neighbours): they
   // took the plain kernel gradient.
   LocalIndex uncorrected() const { return uncorrected_; }
+  const Reconstruction& reconstruction() const { return reconstruction_; }
+  // Elements failed by their distortion so far.
+  LocalIndex distorted() const { return distorted_; }
 
  private:
   void search();
@@ -70,6 +75,8 @@ class Integrator {
   Clock clock_;
   PhaseTimers timers_;
   Pairs pairs_;
+  Reconstruction reconstruction_;
+  LocalIndex distorted_ = 0;
   Eigenerosion erosion_;
   DebrisRelease release_;
   std::vector<IndexRange> body_points_;

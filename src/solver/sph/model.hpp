@@ -3,10 +3,18 @@
 // whose material points are the particles, and each particle's prescribed velocity components.
 #include "solver/common/particle_state.hpp"
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
 namespace kessler::sph {
+
+// A lattice body's elements (geometry/lattice.hpp): element (i, j, k) spans origin + (i, j, k) cell
+// to origin + (i + 1, j + 1, k + 1) cell.
+struct LatticeFrame {
+  Vec3 origin = Vec3::Zero();
+  Vec3 cell = Vec3::Zero();  // zero: the body is not a lattice (a tet mesh's barycentres)
+};
 
 struct Model : ParticleState {
   // Per particle, in store order: bit a set if velocity component a is prescribed, to prescribed_v[a]
@@ -15,6 +23,10 @@ struct Model : ParticleState {
   std::vector<Vec3> prescribed_v;
   // Each particle's linear viscosity coefficient alpha (Morris & Monaghan's switch, Integrator).
   std::vector<double> viscosity;
+  // The finite-element reconstruction (solver/sph/reconstruction.hpp): each body's lattice, and each
+  // particle's element on it ({-1, -1, -1} for a particle of a body that is not a lattice).
+  std::vector<LatticeFrame> lattices;
+  std::vector<std::array<int, 3>> element;
 };
 
 }  // namespace kessler::sph

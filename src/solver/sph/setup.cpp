@@ -12,34 +12,47 @@ namespace kessler::sph {
 
 namespace {
 
-// The particles of one body: a lattice for an analytic shape, the tets' barycentres otherwise.
-geometry::Discretisation particlesOf(const BodySetup& setup, const std::vector<int>& symmetry_axes) {
+// The particles of one body: a lattice for an analytic shape or a structured box, the tets'
+// barycentres otherwise (with no lattice: frame.cell zero, elements empty).
+struct BodyParticles {
+  geometry::Discretisation particles;
+  LatticeFrame frame;
+  std::vector<std::array<int, 3>> element;
+};
+
+BodyParticles fromLattice(geometry::Lattice&& lattice) {
+  return {std::move(lattice.particles), {lattice.origin, lattice.cell}, std::move(lattice.element)};
+}
+
+BodyParticles particlesOf(const BodySetup& setup, const std::vector<int>& symmetry_axes) {
   if (const auto* structured = std::get_if<geometry::StructuredBox>(&setup.mesh)) {
     try {
-      return geometry::fillBoxLattice(structured->box, structured->cells).particles;
+      return fromLattice(geometry::fillBoxLattice(structured->box, structured->cells));
     } catch (const InputError& e) {
       throw InputError(fmt::format("body '{}': {}", setup.name, e.what()));
     }
   }
   const auto* request = std::get_if<geometry::MeshRequest>(&setup.mesh);
   if (request == nullptr || std::holds_alternative<geometry::MeshFile>(request->shape)) {
-    geometry::Discretisation tets;
+    BodyParticles tets;
     if (request == nullptr) {
-      tets = std::get<geometry::Discretisation>(setup.mesh);
+      tets.particles = std::get<geometry::Discretisation>(setup.mesh);
     } else {
       geometry::MeshRequest clipped = *request;
       clipped.symmetry_axes = symmetry_axes;
-      tets = geometry::discretise(geometry::meshShape(clipped));
+      tets.particles = geometry::discretise(geometry::meshShape(clipped));
     }
     // A particle's spacing is the cube root of its volume (a tet's mean edge, OTM's support size,
     // is about twice the distance between barycentres).
-    for (std::size_t p = 0; p < tets.points.size(); ++p) tets.spacings[p] = std::cbrt(tets.volumes[p]);
+    geometry::Discretisation& d = tets.particles;
+    for (std::size_t p = 0; p < d.points.size(); ++p) d.spacings[p] = std::cbrt(d.volumes[p]);
+    tets.element.assign(d.points.size(), {-1, -1, -1});
     return tets;
   }
   if (request->refine)
     throw InputError(fmt::format("body '{}': SPH fills a body with one particle size; refine is OTM's", setup.name));
   try {
-    return geometry::fillLattice(request->shape, request->mesh_size, symmetry_axes).particles;
+    return fromLattice(geometry::fillLattice(request->shape, request->mesh_size, symmetry_axes));
   } catch (const InputError& e) {
     throw InputError(fmt::format("body '{}': {}", setup.name, e.what()));
   }
@@ -67,7 +80,10 @@ Model buildModel(const Problem& problem) {
   PointStore& points = model.points;
   for (const BodySetup& setup : problem.bodies) {
     KESSLER_VERIFY(setup.material != nullptr, "body '{}' has no material", setup.name);
-    const geometry::Discretisation particles = particlesOf(setup, problem.symmetry_axes);
+    BodyParticles made = particlesOf(setup, problem.symmetry_axes);
+    const geometry::Discretisation& particles = made.particles;
+    model.lattices.push_back(made.frame);
+    model.element.insert(model.element.end(), made.element.begin(), made.element.end());
     const int body = static_cast<int>(model.bodies.size());
     int material = -1;
     for (std::size_t m = 0; m < model.materials.size(); ++m)

@@ -33,12 +33,18 @@ std::vector<std::pair<std::string, double>> SphMethod::sizes() const {
 }
 
 std::vector<std::string> SphMethod::notes() const {
-  const LocalIndex n = integrator_.uncorrected();
-  if (n == 0) return {};
-  return {
-      fmt::format("{} particle(s) had too few neighbours for the kernel correction at the last step and took the "
-                  "plain kernel gradient (docs/theory.md §10)",
-                  n)};
+  std::vector<std::string> notes;
+  if (const LocalIndex n = integrator_.distorted(); n > 0)
+    notes.push_back(
+        fmt::format("{} element(s) failed by their distortion (reconstructed corner angle below the "
+                    "threshold; docs/theory.md §10)",
+                    n));
+  if (const LocalIndex n = integrator_.uncorrected(); n > 0)
+    notes.push_back(
+        fmt::format("{} particle(s) had too few neighbours for the kernel correction at the last step and "
+                    "took the plain kernel gradient (docs/theory.md §10)",
+                    n));
+  return notes;
 }
 
 void SphMethod::save(StateWriter& out) const {
@@ -52,6 +58,16 @@ void SphMethod::save(StateWriter& out) const {
   out.array("/sph/constrained", model_.constrained);
   out.array("/sph/prescribed_v", model_.prescribed_v);
   out.array("/sph/viscosity", model_.viscosity);
+  out.scalar("sph_distorted", static_cast<std::int64_t>(integrator_.distorted()));
+  std::vector<std::int32_t> element;
+  for (const std::array<int, 3>& e : model_.element) element.insert(element.end(), e.begin(), e.end());
+  out.array("/sph/element", element);
+  std::vector<Vec3> lattices;
+  for (const LatticeFrame& f : model_.lattices) {
+    lattices.push_back(f.origin);
+    lattices.push_back(f.cell);
+  }
+  out.array("/sph/lattices", lattices);
 }
 
 void SphMethod::load(const StateReader& in) {
@@ -59,8 +75,15 @@ void SphMethod::load(const StateReader& in) {
   in.array("/sph/constrained", model_.constrained, n);
   in.array("/sph/prescribed_v", model_.prescribed_v, n);
   in.array("/sph/viscosity", model_.viscosity, n);
+  std::vector<std::int32_t> element;
+  in.array("/sph/element", element, 3 * n);
+  for (std::size_t p = 0; p < n; ++p) model_.element[p] = {element[3 * p], element[3 * p + 1], element[3 * p + 2]};
+  std::vector<Vec3> lattices;
+  in.array("/sph/lattices", lattices, 2 * model_.bodies.size());
+  for (std::size_t b = 0; b < model_.bodies.size(); ++b) model_.lattices[b] = {lattices[2 * b], lattices[2 * b + 1]};
   integrator_.restore(Clock{in.doubleScalar("sph_time"), in.intScalar("sph_steps"), in.doubleScalar("sph_dt_last"),
-                            in.doubleScalar("sph_dt_next"), in.doubleScalar("sph_dt_initial")});
+                            in.doubleScalar("sph_dt_next"), in.doubleScalar("sph_dt_initial")},
+                      static_cast<LocalIndex>(in.intScalar("sph_distorted")));
 }
 
 }  // namespace kessler::sph

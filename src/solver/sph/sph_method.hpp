@@ -28,7 +28,8 @@ class SphMethod final : public Method {
   Energies energies() const override { return integrator_.energies(); }
   const PhaseTimers& timers() const override { return integrator_.timers(); }
   const ParticleState& state() const override { return model_; }
-  NodeCloud nodes() const override { return {}; }
+  // The reconstructed elements' nodes (solver/sph/reconstruction.hpp).
+  NodeCloud nodes() const override { return integrator_.reconstruction().cloud(); }
   std::vector<std::pair<std::string, double>> sizes() const override;
   std::vector<std::string> notes() const override;
   double stepLength(LocalIndex p) const override { return integrator_.smoothingLength(p); }

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 #include <numeric>
+#include <tuple>
 
 namespace kessler::geometry {
 namespace {
@@ -24,8 +25,16 @@ TEST(Lattice, BoxIsFilledExactlyWithWholeElements) {
   EXPECT_NEAR(l.cell[2], 4.1e-3 / 8, 1e-15);
   // Centroids half an element inside the faces.
   EXPECT_NEAR(l.particles.points.front()[0], -1e-3 + 0.25e-3, 1e-15);
-  // Face neighbours: (5*2*8) + (6*1*8) + (6*2*7) pairs.
-  EXPECT_EQ(l.particles.adjacency.size(), 80u + 48u + 84u);
+  // Elements sharing a node, over a 6 x 2 x 8 block: for each offset (di, dj, dk) of the 13 forward
+  // ones, (6 - |di|)(2 - |dj|)(8 - |dk|) pairs.
+  std::size_t pairs = 0;
+  for (int dk = -1; dk <= 1; ++dk)
+    for (int dj = -1; dj <= 1; ++dj)
+      for (int di = -1; di <= 1; ++di)
+        if (std::make_tuple(dk, dj, di) > std::make_tuple(0, 0, 0))
+          pairs += static_cast<std::size_t>((6 - std::abs(di)) * (2 - std::abs(dj)) * (8 - std::abs(dk)));
+  EXPECT_EQ(l.particles.adjacency.size(), pairs);
+  EXPECT_EQ(l.count, (std::array<int, 3>{6, 2, 8}));
 }
 
 TEST(Lattice, SphereHoldsItsVolumeAndSymmetryPlanesAreElementFaces) {

@@ -4,6 +4,8 @@
 #include "core/error.hpp"
 #include "solver/methods.hpp"
 #include "solver/sph/kernel.hpp"
+#include "solver/sph/reconstruction.hpp"
+#include "solver/sph/setup.hpp"
 #include "solver/sph/sph_method.hpp"
 
 #include <gtest/gtest.h>
@@ -177,6 +179,71 @@ TEST(Sph, RefusesSeveralRanksAndAThinBody) {
     FAIL() << "a plate thinner than two particles was accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("body 'plate'"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace kessler::sph
+
+namespace kessler::sph {
+namespace {
+
+// A 3 x 3 x 3 lattice block (1 mm elements), as SPH's setup builds it.
+Model latticeBlock() {
+  Problem problem;
+  problem.method = "sph";
+  problem.settings.solver.end_time = 1e-6;
+  BodySetup block;
+  block.name = "block";
+  block.material = testing::aluminium();
+  block.mesh = geometry::StructuredBox{geometry::Box{Vec3::Zero(), Vec3(3e-3, 3e-3, 3e-3)}, {3, 3, 3}};
+  problem.bodies = {block};
+  return buildModel(problem);
+}
+
+// Under any affine motion x = A X + c the reconstructed nodes are the affine images of the lattice's
+// corners, interior (the mean of 8 particles) and surface (extrapolated by F) alike.
+TEST(SphReconstruction, AffineMotionIsReconstructedExactly) {
+  Model model = latticeBlock();
+  Mat3 A;
+  A << 1.1, 0.2, 0.0, -0.1, 0.9, 0.05, 0.0, 0.1, 1.2;
+  const Vec3 c(1e-3, -2e-3, 0.5e-3);
+  const std::vector<Vec3> reference = model.points.x;
+  for (LocalIndex p = 0; p < model.points.size(); ++p) {
+    model.points.x[p] = A * reference[p] + c;
+    model.points.F[p] = A;
+  }
+  Reconstruction r(model);
+  const NodeCloud before = r.cloud();
+  ASSERT_EQ(before.owned, 64);  // 4 x 4 x 4 corners
+  const std::vector<Vec3> corners(before.x.begin(), before.x.end());
+  r.rebuild(model);
+  const NodeCloud after = r.cloud();
+  for (LocalIndex a = 0; a < after.owned; ++a)
+    EXPECT_LT((after.x[a] - (A * corners[a] + c)).norm(), 1e-15) << "node " << a;
+  EXPECT_EQ(r.failDistorted(model, 0.2), 0);
+  // The quality of a sheared cube is the sine of its corner angle: for this A, at least 0.2.
+  for (LocalIndex p = 0; p < model.points.size(); ++p) EXPECT_GT(r.quality(p), 0.8);
+}
+
+// A block sheared by gamma = 6 (corner angle atan(1/6), 9.5 degrees, below 11.5): every element fails,
+// its particle broken and under compression only.
+TEST(SphReconstruction, ShearedElementsFail) {
+  Model model = latticeBlock();
+  Mat3 A = Mat3::Identity();
+  A(0, 2) = 6.0;
+  for (LocalIndex p = 0; p < model.points.size(); ++p) {
+    model.points.x[p] = A * model.points.x[p];
+    model.points.F[p] = A;
+    model.points.stress[p] = 1e8 * Mat3::Identity();  // tension: gone once failed
+  }
+  Reconstruction r(model);
+  r.rebuild(model);
+  EXPECT_EQ(r.failDistorted(model, 0.2), 27);
+  for (LocalIndex p = 0; p < model.points.size(); ++p) {
+    EXPECT_TRUE(model.points.failed(p));
+    EXPECT_EQ(model.points.stress[p], Mat3::Zero());
+    EXPECT_TRUE(std::isnan(r.quality(p)) || r.quality(p) < 0.2);
   }
 }
 

@@ -1,0 +1,123 @@
+#include "solver/sph/reconstruction.hpp"
+
+#include "core/error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace kessler::sph {
+
+Reconstruction::Reconstruction(const Model& model) {
+  const PointStore& points = model.points;
+  const auto n = static_cast<std::size_t>(points.size());
+  KESSLER_VERIFY(model.element.size() == n && model.lattices.size() == model.bodies.size(),
+                 "reconstruction: {} elements for {} particles, {} lattices for {} bodies", model.element.size(), n,
+                 model.lattices.size(), model.bodies.size());
+  element_nodes_.assign(n, {-1, -1, -1, -1, -1, -1, -1, -1});
+  particle_reference_.assign(n, Vec3::Zero());
+  quality_.assign(n, std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    const LatticeFrame& frame = model.lattices[b];
+    if (frame.cell == Vec3::Zero()) continue;
+    // The body's nodes on a grid one larger than its elements' extent.
+    std::array<int, 3> hi{0, 0, 0};
+    for (std::size_t p = 0; p < n; ++p)
+      if (points.body[p] == static_cast<std::int32_t>(b))
+        for (int a = 0; a < 3; ++a) {
+          KESSLER_VERIFY(model.element[p][a] >= 0, "reconstruction: particle {} of a lattice body has no element",
+                         points.id[p]);
+          hi[a] = std::max(hi[a], model.element[p][a] + 2);
+        }
+    std::vector<LocalIndex> at(static_cast<std::size_t>(hi[0]) * hi[1] * hi[2], -1);
+    for (std::size_t p = 0; p < n; ++p) {
+      if (points.body[p] != static_cast<std::int32_t>(b)) continue;
+      const std::array<int, 3>& e = model.element[p];
+      particle_reference_[p] = frame.origin + (Vec3(e[0], e[1], e[2]) + Vec3::Constant(0.5)).cwiseProduct(frame.cell);
+      for (int c = 0; c < 8; ++c) {
+        const int i = e[0] + (c & 1), j = e[1] + ((c >> 1) & 1), k = e[2] + ((c >> 2) & 1);
+        LocalIndex& node = at[(static_cast<std::size_t>(k) * hi[1] + j) * hi[0] + i];
+        if (node < 0) {
+          node = static_cast<LocalIndex>(id_.size());
+          id_.push_back(static_cast<Index>(id_.size()));
+          body_.push_back(static_cast<std::int32_t>(b));
+          reference_.push_back(frame.origin + Vec3(i, j, k).cwiseProduct(frame.cell));
+          node_elements_.push_back({-1, -1, -1, -1, -1, -1, -1, -1});
+        }
+        element_nodes_[p][c] = node;
+        node_elements_[node][c] = static_cast<LocalIndex>(p);
+      }
+    }
+  }
+  x_ = reference_;
+  v_.assign(x_.size(), Vec3::Zero());
+  mass_.assign(x_.size(), 0.0);
+}
+
+void Reconstruction::rebuild(const Model& model) {
+  const PointStore& points = model.points;
+  const auto nodes = static_cast<LocalIndex>(x_.size());
+#pragma omp parallel for schedule(static)
+  for (LocalIndex a = 0; a < nodes; ++a) {
+    const std::array<LocalIndex, 8>& elements = node_elements_[a];
+    int intact = 0, present = 0;
+    for (const LocalIndex p : elements) {
+      present += p >= 0;
+      intact += p >= 0 && !points.broken[p];
+    }
+    // Beside failed material only: from every element, failed ones too (it is drawn, never judged).
+    const bool all = intact == 0;
+    Vec3 x = Vec3::Zero(), v = Vec3::Zero();
+    for (const LocalIndex p : elements) {
+      if (p < 0 || (!all && points.broken[p])) continue;
+      x += intact == 8 ? points.x[p] : Vec3(points.x[p] + points.F[p] * (reference_[a] - particle_reference_[p]));
+      v += points.v[p];
+    }
+    const int count = all ? present : intact;
+    x_[a] = x / count;
+    v_[a] = v / count;
+  }
+}
+
+LocalIndex Reconstruction::failDistorted(Model& model, double min_quality) {
+  PointStore& points = model.points;
+  std::vector<std::uint8_t> fail(static_cast<std::size_t>(points.owned), 0);
+#pragma omp parallel for schedule(static)
+  for (LocalIndex p = 0; p < points.owned; ++p) {
+    const std::array<LocalIndex, 8>& nodes = element_nodes_[p];
+    if (nodes[0] < 0 || points.broken[p]) {
+      quality_[p] = std::numeric_limits<double>::quiet_NaN();
+      continue;
+    }
+    double quality = std::numeric_limits<double>::infinity();
+    for (int c = 0; c < 8; ++c) {
+      // The corner's three edges, each pointing along +x, +y, +z of the reference cube.
+      Mat3 edges;
+      for (int d = 0; d < 3; ++d) {
+        const int other = c ^ (1 << d);
+        const double sign = (c >> d) & 1 ? -1.0 : 1.0;
+        edges.col(d) = sign * (x_[nodes[other]] - x_[nodes[c]]);
+      }
+      const double lengths = edges.col(0).norm() * edges.col(1).norm() * edges.col(2).norm();
+      quality = std::min(quality, lengths > 0.0 ? edges.determinant() / lengths : -1.0);
+    }
+    quality_[p] = quality;
+    fail[p] = !(quality >= min_quality);
+  }
+  LocalIndex failed = 0;
+  for (LocalIndex p = 0; p < points.owned; ++p) {
+    if (!fail[p]) continue;
+    points.fail(p);
+    // As eigenerosion's: the failed point keeps its compression only.
+    const double pressure = -points.stress[p].trace() / 3.0;
+    points.stress[p] = -std::max(pressure, 0.0) * Mat3::Identity();
+    ++failed;
+  }
+  return failed;
+}
+
+NodeCloud Reconstruction::cloud() const {
+  return {id_, body_, x_, v_, mass_, static_cast<LocalIndex>(x_.size())};
+}
+
+}  // namespace kessler::sph

@@ -1,0 +1,53 @@
+#pragma once
+// The finite-element reconstruction of SPH's particles (docs/theory.md §10; the particle-centroid
+// coincident model of Zhang & Jia, on SPH of satellite breakup). Each particle of a lattice body is
+// the centroid of a hexahedral element; after every step the elements' nodes are rebuilt from the
+// particles:
+//   - a node with all 8 of its elements intact: the mean of their particles' positions;
+//   - any other node (a body's surface, or beside failed material): the mean, over its intact
+//     elements, of the particle's position extrapolated by its own deformation gradient,
+//     x_p + F_p (X_a - X_p) (X: reference positions); exact for any affine motion;
+//   - a node of failed elements only: the same over all of them (drawn in the output, never judged).
+// An intact element fails when its reconstructed shape is too distorted: the smallest scaled
+// Jacobian of its eight corners (det of the corner's three edges over the product of their
+// lengths: 1 for a cube, the sine of the corner's angle under shear, negative when inverted) below
+// the threshold. Its particle fails (PointStore::fail): broken material, a free particle, no longer
+// part of a trusted fragment. Material failure (eigenerosion, Johnson-Cook damage, spall) fails an
+// element the same way. Trusted fragments are the connected components of intact elements that share
+// a node (the lattice's adjacency; analysis/fragments.hpp).
+#include "solver/common/node_cloud.hpp"
+#include "solver/sph/model.hpp"
+
+#include <array>
+#include <vector>
+
+namespace kessler::sph {
+
+class Reconstruction {
+ public:
+  // The nodes of every lattice body's elements (Model::lattices, Model::element).
+  explicit Reconstruction(const Model& model);
+  // The nodes from the particles' current state.
+  void rebuild(const Model& model);
+  // Fails every intact particle whose element's quality is below `min_quality` (after rebuild);
+  // returns how many failed.
+  LocalIndex failDistorted(Model& model, double min_quality);
+  // The smallest scaled corner Jacobian of particle p's element at the last failDistorted (1: a cube);
+  // NaN for a particle without an element, or broken before it.
+  double quality(LocalIndex p) const { return quality_[static_cast<std::size_t>(p)]; }
+  NodeCloud cloud() const;
+
+ private:
+  std::vector<Index> id_;
+  std::vector<std::int32_t> body_;
+  std::vector<Vec3> reference_, x_, v_;
+  std::vector<double> mass_;  // zero: the nodes carry no mass (the particles do)
+  // Each node's elements by the corner the node is of them (bit 0: +x, 1: +y, 2: +z), -1 if none.
+  std::vector<std::array<LocalIndex, 8>> node_elements_;
+  // Each particle's nodes by corner, -1 for a particle without an element.
+  std::vector<std::array<LocalIndex, 8>> element_nodes_;
+  std::vector<Vec3> particle_reference_;
+  std::vector<double> quality_;
+};
+
+}  // namespace kessler::sph
