@@ -15,7 +15,8 @@ struct ParticleState {
   PointStore points;
   std::vector<BodyInfo> bodies;
   std::vector<MaterialPtr> materials;  // indexed by BodyInfo::material
-  // Pairs of points whose initial tets share a face, by id (PointStore::id: the same on every
+  // Pairs of points whose initial tets share a face (OTM), or whose lattice elements share a node
+  // (SPH, solver/sph/reconstruction.hpp), by id (PointStore::id: the same on every
   // process and in any order of the store), i < j; fragments are the connected components of
   // intact material over these links (analysis/fragments.hpp).
   std::vector<std::array<Index, 2>> adjacency;

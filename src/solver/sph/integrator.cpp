@@ -139,9 +139,9 @@ void Integrator::search() {
       pairs_.active[e] = within || approaching || pressed;
       if (!pairs_.active[e]) continue;
       moment.noalias() -= points.volume[j] * d * pairs_.gradient[e].transpose();
-      if (points.debris(i) && !points.debris(j)) struck = points.body[j];
+      if (points.debris(i) && !points.debris(j) && points.body[j] != points.body[i]) struck = points.body[j];
     }
-    // A debris particle that meets a body strikes it (the rear-wall analysis counts those).
+    // A debris particle that meets another body strikes it (the rear-wall analysis counts those).
     if (struck >= 0) points.strike(i, struck);
     // The correction where the moment is well conditioned: its smallest singular value at least a
     // tenth of an interior particle's (1), as at a surface, an edge or a corner of a body.
@@ -301,6 +301,10 @@ void Integrator::updateMaterials(double dt) {
     heat_.resize(static_cast<std::size_t>(points.owned));
     for (LocalIndex p = 0; p < points.owned; ++p) heat_[p] = viscous_power_[p] * dt;
     heatPoints(heat_);
+    // The laws heat no debris (it has no thermal update): its share is kept as internal energy, so
+    // that a debris cloud's collisions conserve energy.
+    for (LocalIndex p = 0; p < points.owned; ++p)
+      if (points.debris(p)) points.energy[p] += heat_[p] / points.mass[p];
   }
   // SPH's viscosity is its own: the laws' bulk viscosity stays off (limiter 1).
   std::fill(points.viscosity_limiter.begin(), points.viscosity_limiter.end(), 1.0);
