@@ -64,10 +64,11 @@ tsan() {
   export OMP_TOOL_LIBRARIES=$archer OMP_NUM_THREADS=2
   export TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 ignore_noninstrumented_modules=1"
   build-tsan/src/app/kessler verify thread-determinism
+  build-tsan/src/app/kessler verify --method sph thread-determinism flyer-plate
   build-tsan/src/app/kessler run examples/whipple.yaml --out build-tsan/whipple-short --threads 2 --quiet \
     --set solver.end_time="1.5 us" --set output.every="0.5 us" --set bodies.0.mesh_size="0.7 mm" \
     --set bodies.1.mesh_size="0.8 mm" --set bodies.2.mesh_size="1.94 mm"
-  echo "tsan: thread-determinism and a 1.5 us whipple impact on 2 threads ran without a race"
+  echo "tsan: thread-determinism (OTM and SPH), SPH's flyer plate and a 1.5 us whipple impact on 2 threads ran without a race"
 }
 
 fuzz() {

@@ -124,11 +124,11 @@ void Integrator::search() {
   }
   pairs_.build(points.x, h_, points.owned, settings_.symmetry_axes);
   correction_.resize(n);
+  struck_.assign(n, -1);
   LocalIndex uncorrected = 0;
 #pragma omp parallel for schedule(static) reduction(+ : uncorrected)
   for (LocalIndex i = 0; i < points.owned; ++i) {
     Mat3 moment = Mat3::Zero();
-    int struck = -1;
     for (Index e = pairs_.offset[i]; e < pairs_.offset[i + 1]; ++e) {
       const LocalIndex j = pairs_.other[e];
       const std::uint8_t m = pairs_.mirror[e];
@@ -139,10 +139,8 @@ void Integrator::search() {
       pairs_.active[e] = within || approaching || pressed;
       if (!pairs_.active[e]) continue;
       moment.noalias() -= points.volume[j] * d * pairs_.gradient[e].transpose();
-      if (points.debris(i) && !points.debris(j) && points.body[j] != points.body[i]) struck = points.body[j];
+      if (points.debris(i) && !points.debris(j) && points.body[j] != points.body[i]) struck_[i] = points.body[j];
     }
-    // A debris particle that meets another body strikes it (the rear-wall analysis counts those).
-    if (struck >= 0) points.strike(i, struck);
     // The correction where the moment is well conditioned: its smallest singular value at least a
     // tenth of an interior particle's (1), as at a surface, an edge or a corner of a body.
     if (!points.debris(i) && moment.allFinite() && smallestRootEigenvalue(moment.transpose() * moment) > 0.1) {
@@ -153,6 +151,10 @@ void Integrator::search() {
     }
   }
   uncorrected_ = uncorrected;
+  // A debris particle that met another body strikes it (the rear-wall analysis counts those): after
+  // the loop, which reads every particle's state.
+  for (LocalIndex i = 0; i < points.owned; ++i)
+    if (struck_[i] >= 0) points.strike(i, struck_[i]);
 }
 
 // The forces at the current state (docs/theory.md §10): the stress's over the active pairs, Monaghan's

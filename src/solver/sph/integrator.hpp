@@ -88,6 +88,7 @@ class Integrator {
   std::vector<double> signal_;         // the largest viscous signal speed mu of each particle, m/s
   std::vector<double> volume_rate_;    // ln J / dt of the last step
   std::vector<double> heat_;
+  std::vector<int> struck_;  // the body each debris particle met at the last search, -1 none
   LocalIndex uncorrected_ = 0;
 };
 
