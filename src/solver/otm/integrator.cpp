@@ -2,6 +2,7 @@
 
 #include "approx/lme.hpp"
 #include "core/error.hpp"
+#include "solver/common/body_laws.hpp"
 #include "solver/common/debris_contact.hpp"
 #include "solver/common/release.hpp"
 #include "solver/common/stable_step.hpp"
@@ -435,26 +436,13 @@ void Integrator::balanceEnergy() {
 #pragma omp parallel for schedule(static)
   for (LocalIndex p = 0; p < points.owned; ++p)
     transfer_heat_[p] = points.broken[p] ? 0.0 : force_work_[p] - stored[p] - points.mass[p] * points.energy[p];
-  heatPoints(transfer_heat_);
-}
-
-// Material::heat over each body's range of `heat` (J per point).
-void Integrator::heatPoints(const std::vector<double>& heat) {
-  PointStore& points = model_.points;
-  for (std::size_t b = 0; b < model_.bodies.size(); ++b) {
-    const LocalIndex begin = body_points_[b].begin, end = body_points_[b].end;
-    if (end > begin)
-      model_.materials[model_.bodies[b].material]->heat(
-          points, begin, end,
-          std::span<const double>(heat).subspan(static_cast<std::size_t>(begin),
-                                                static_cast<std::size_t>(end - begin)));
-  }
+  heatBodies(model_, body_points_, transfer_heat_);
 }
 
 void Integrator::updateMaterials(double dt) {
   PointStore& points = model_.points;
   if (dt > 0.0) {
-    heatPoints(transfer_heat_);
+    heatBodies(model_, body_points_, transfer_heat_);
     // What each point's energy must be after the step, less the stabilisation's share (balanceEnergy).
 #pragma omp parallel for schedule(static)
     for (LocalIndex p = 0; p < points.owned; ++p) force_work_[p] += points.mass[p] * points.energy[p];
@@ -463,8 +451,7 @@ void Integrator::updateMaterials(double dt) {
   LocalIndex refused = -1;
   std::string why;
   try {
-    for (std::size_t b = 0; b < model_.bodies.size(); ++b)
-      model_.materials[model_.bodies[b].material]->update(points, body_points_[b].begin, body_points_[b].end, dt);
+    updateBodies(model_, body_points_, dt);
   } catch (const PointError& e) {
     refused = static_cast<LocalIndex>(e.point());
     why = e.what();

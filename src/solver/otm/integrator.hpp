@@ -98,7 +98,6 @@ class Integrator {
   void initialVolumeRates();
   void updateMaterials(double dt);
   void balanceEnergy();
-  void heatPoints(const std::vector<double>& heat);
   double stableStep() const;
   void findBodyRanges();
   // The neighbourhoods and shape functions (Neighbourhoods::update); a distributed run fetches its

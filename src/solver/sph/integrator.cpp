@@ -1,6 +1,7 @@
 #include "solver/sph/integrator.hpp"
 
 #include "core/error.hpp"
+#include "solver/common/body_laws.hpp"
 #include "solver/common/stable_step.hpp"
 #include "solver/sph/kernel.hpp"
 
@@ -285,24 +286,12 @@ void Integrator::switchViscosity(LocalIndex p, double div_v, double dt) {
   alpha = (alpha + dt * (decay * o.viscosity_min + source * o.viscosity_max)) / (1.0 + dt * (decay + source));
 }
 
-void Integrator::heatPoints(const std::vector<double>& heat) {
-  PointStore& points = model_.points;
-  for (std::size_t b = 0; b < model_.bodies.size(); ++b) {
-    const LocalIndex begin = body_points_[b].begin, end = body_points_[b].end;
-    if (end > begin)
-      model_.materials[model_.bodies[b].material]->heat(
-          points, begin, end,
-          std::span<const double>(heat).subspan(static_cast<std::size_t>(begin),
-                                                static_cast<std::size_t>(end - begin)));
-  }
-}
-
 void Integrator::updateMaterials(double dt) {
   PointStore& points = model_.points;
   if (dt > 0.0) {
     heat_.resize(static_cast<std::size_t>(points.owned));
     for (LocalIndex p = 0; p < points.owned; ++p) heat_[p] = viscous_power_[p] * dt;
-    heatPoints(heat_);
+    heatBodies(model_, body_points_, heat_);
     // The laws heat no debris (it has no thermal update): its share is kept as internal energy, so
     // that a debris cloud's collisions conserve energy.
     for (LocalIndex p = 0; p < points.owned; ++p)
@@ -311,8 +300,7 @@ void Integrator::updateMaterials(double dt) {
   // SPH's viscosity is its own: the laws' bulk viscosity stays off (limiter 1).
   std::fill(points.viscosity_limiter.begin(), points.viscosity_limiter.end(), 1.0);
   try {
-    for (std::size_t b = 0; b < model_.bodies.size(); ++b)
-      model_.materials[model_.bodies[b].material]->update(points, body_points_[b].begin, body_points_[b].end, dt);
+    updateBodies(model_, body_points_, dt);
   } catch (const PointError& e) {
     failAtPoint(static_cast<LocalIndex>(e.point()), e.what());
   }

@@ -66,7 +66,6 @@ class Integrator {
   void deform(double dt);
   void switchViscosity(LocalIndex p, double div_v, double dt);
   void updateMaterials(double dt);
-  void heatPoints(const std::vector<double>& heat);
   double stableStep() const;
   [[noreturn]] void failAtPoint(LocalIndex p, const std::string& what) const;
 
