@@ -1,6 +1,6 @@
-// fragments.csv and fragments_cumulative.csv. The analysis layer sits below io/, so it writes
-// its two small text files itself: to a temporary name, then renamed over the target, so a
-// reader never sees half a file.
+// fragments.csv, fragments_cumulative.csv and fragment_points.csv. The analysis layer sits below
+// io/, so it writes its text files itself: to a temporary name, then renamed over the target, so
+// a reader never sees half a file.
 #include "analysis/report.hpp"
 
 #include "core/error.hpp"
@@ -53,6 +53,17 @@ std::string cumulativeCsv(const Report& r) {
   return text;
 }
 
+// Which fragment each point ends in (its rank in fragments.csv; 0: broken, a free particle or
+// eroded debris), by point id: with the outputs' ids and first positions it maps every fragment
+// back to the material it came from (tools/plots/back_projection.py).
+std::string pointsCsv(const Report& r) {
+  const FragmentSet& f = r.fragments;
+  std::string text = "id,fragment\n";
+  text.reserve(text.size() + 16 * f.label.size());
+  for (std::size_t p = 0; p < f.label.size(); ++p) text += fmt::format("{},{}\n", f.point_id[p], f.label[p] + 1);
+  return text;
+}
+
 }  // namespace
 
 void writeFragmentFiles(const std::filesystem::path& dir, const Report& report) {
@@ -61,6 +72,7 @@ void writeFragmentFiles(const std::filesystem::path& dir, const Report& report) 
   if (error) throw Error(fmt::format("cannot create the folder '{}': {}", dir.string(), error.message()));
   writeAtomically(dir / "fragments.csv", fragmentsCsv(report));
   writeAtomically(dir / "fragments_cumulative.csv", cumulativeCsv(report));
+  writeAtomically(dir / "fragment_points.csv", pointsCsv(report));
 }
 
 }  // namespace kessler::analysis

@@ -232,6 +232,7 @@ FragmentSet findFragments(const ParticleState& model, const std::vector<double>&
     sorted[r] = set.fragments[order[r]];
   }
   set.fragments = std::move(sorted);
+  set.point_id.assign(points.id.begin(), points.id.begin() + n);
   // Outside the parallel region: the area checks its argument and may throw.
   for (Fragment& f : set.fragments) f.area = nasaFragmentArea(f.lc);
   for (LocalIndex& l : set.label)

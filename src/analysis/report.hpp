@@ -64,7 +64,8 @@ nlohmann::json toJson(const Report& report);
 std::string formatReport(const Report& report);
 
 // Writes dir/fragments.csv (one row per fragment, largest mass first) and
-// dir/fragments_cumulative.csv (N(>=Lc) with the NASA model's count), each atomically.
+// dir/fragments_cumulative.csv (N(>=Lc) with the NASA model's count) and dir/fragment_points.csv
+// (each point's id and fragment rank, 0 for broken), each atomically.
 void writeFragmentFiles(const std::filesystem::path& dir, const Report& report);
 
 }  // namespace kessler::analysis

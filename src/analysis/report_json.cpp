@@ -25,7 +25,8 @@ json fragmentsJson(const Report& r) {
               {"broken_links", set.broken_links},
               {"reference_link_lengths", set.reference_lengths},
               {"csv", "fragments.csv"},
-              {"cumulative_csv", "fragments_cumulative.csv"}};
+              {"cumulative_csv", "fragments_cumulative.csv"},
+              {"points_csv", "fragment_points.csv"}};
   json eroded = json::object();
   json mass = json::object();
   for (std::size_t b = 0; b < r.body_names.size(); ++b) {

@@ -5,6 +5,7 @@
 
 #include <numbers>
 #include <string>
+#include <vector>
 
 namespace kessler::analysis {
 namespace {
@@ -57,12 +58,13 @@ std::string formatReport(const Report& r) {
   }
   if (r.rear_wall) {
     const RearWallDamage& w = *r.rear_wall;
-    line(out, fmt::format("  rear wall {:<10} {} ({}): {} perforation(s), {} detached spall fragment(s) ({:.3f} g), "
-                          "{:.3f} g failed inside, bulge {:.2f} mm; struck by {:.3f} g of debris; {:.1f} point spacings "
-                          "through its thickness",
-                          r.body_names[w.body], w.classification, w.failed() ? "failed" : "holds", w.perforations,
-                          w.spall_fragments, w.spall_mass * 1e3, w.incipient_mass * 1e3, w.bulge * 1e3,
-                          w.debris_struck * 1e3, w.spacings_through));
+    line(out,
+         fmt::format("  rear wall {:<10} {} ({}): {} perforation(s), {} detached spall fragment(s) ({:.3f} g), "
+                     "{:.3f} g failed inside, bulge {:.2f} mm; struck by {:.3f} g of debris; {:.1f} point spacings "
+                     "through its thickness",
+                     r.body_names[w.body], w.classification, w.failed() ? "failed" : "holds", w.perforations,
+                     w.spall_fragments, w.spall_mass * 1e3, w.incipient_mass * 1e3, w.bulge * 1e3,
+                     w.debris_struck * 1e3, w.spacings_through));
   }
   if (r.shield) {
     const ShieldComparison& s = *r.shield;
@@ -77,10 +79,25 @@ std::string formatReport(const Report& r) {
   for (const double m : f.eroded_mass) eroded += m;
   line(out, fmt::format("  fragments            {} ({} distinct), sub-resolution debris {:.3f} g", f.count(),
                         f.fragments.size(), eroded * 1e3));
+  if (r.body_names.size() > 1 && !f.fragments.empty()) {
+    std::vector<long> per_body(r.body_names.size(), 0);
+    for (const Fragment& fragment : f.fragments) per_body[static_cast<std::size_t>(fragment.body)] += fragment.copies;
+    std::string counts;
+    for (std::size_t b = 0; b < per_body.size(); ++b)
+      counts += fmt::format("{}{} {}", b == 0 ? "" : ", ", r.body_names[b], per_body[b]);
+    line(out, fmt::format("  fragments by body    {}", counts));
+  }
   if (r.breakup) {
     line(out, fmt::format("  NASA breakup model   {} ({:.1f} J/g), M = {:.4g} kg: N(>1 mm) = {:.0f}, N(>5 mm) = {:.1f}",
                           r.breakup->catastrophic ? "catastrophic" : "non-catastrophic", r.breakup->specific_energy,
                           r.breakup->reference_mass, r.breakup->count(1e-3), r.breakup->count(5e-3)));
+    // At the run's resolution: the smallest fragment's size, where the simulated count ends.
+    double smallest = 0.0;
+    for (const Fragment& fragment : f.fragments)
+      if (fragment.lc > 0.0 && (smallest == 0.0 || fragment.lc < smallest)) smallest = fragment.lc;
+    if (smallest > 0.0)
+      line(out, fmt::format("  {:<20} N(>={:.2f} mm, the smallest fragment) = {:.0f}, simulated {}", "", smallest * mm,
+                            r.breakup->count(smallest), f.count()));
   }
   return out;
 }

@@ -46,9 +46,12 @@ analysis::ImpactGeometry impactGeometry(const io::RunConfig& config, const Parti
     const auto& box = std::get<geometry::Box>(config.bodies[static_cast<std::size_t>(b)].mesh.shape);
     g.plates.push_back(analysis::plateFromBox(b, box, a.shot_direction));
   }
-  const analysis::PlateSpec& first = g.plates.front();
-  g.impact_point = analysis::shotLineHit(startOf(config.bodies[static_cast<std::size_t>(a.projectiles.front())]),
-                                         a.shot_direction, first.normal, first.frontFace());
+  // Where the shot meets the first plate; a collision without plates has no such point.
+  if (!g.plates.empty()) {
+    const analysis::PlateSpec& first = g.plates.front();
+    g.impact_point = analysis::shotLineHit(startOf(config.bodies[static_cast<std::size_t>(a.projectiles.front())]),
+                                           a.shot_direction, first.normal, first.frontFace());
+  }
   g.cloud_reference = a.cloud_reference;
   g.symmetry_axes = config.symmetry_axes;
   g.link_stretch = a.link_stretch;
@@ -116,8 +119,9 @@ void drawPlots(const fs::path& dir, std::initializer_list<const char*> scripts_t
                        path.string()));
       continue;
     }
-    // fragments.py needs fragments.csv, written only when the analysis ran.
+    // The fragment pictures need the fragment files, written only when the analysis ran.
     if (std::string(script) == "fragments.py" && !fs::exists(dir / "fragments.csv", error)) continue;
+    if (std::string(script) == "back_projection.py" && !fs::exists(dir / "fragment_points.csv", error)) continue;
     const std::string command = fmt::format("{} {} {} >>{} 2>&1", system_python, quoted(path.string()),
                                             quoted(dir.string()), quoted(log_file.string()));
     if (std::system(command.c_str()) != 0)

@@ -19,11 +19,11 @@ namespace kessler::app {
 nlohmann::json analyseImpact(const io::RunConfig& config, const ParticleState& model, const std::filesystem::path& dir,
                              const std::string& state);
 
-// Runs tools/plots scripts (by default debris_cloud.py and fragments.py) on `dir` with
+// Runs tools/plots scripts (by default debris_cloud.py, fragments.py and back_projection.py) on `dir` with
 // /usr/bin/python3 (output in dir/plots/, log in dir/plots/plots.log). Missing Python or
 // matplotlib, or a failing script, is a warning. The scripts are looked for in $KESSLER_PLOTS_DIR,
 // else the source tree's tools/plots.
 void drawPlots(const std::filesystem::path& dir,
-               std::initializer_list<const char*> scripts = {"debris_cloud.py", "fragments.py"});
+               std::initializer_list<const char*> scripts = {"debris_cloud.py", "fragments.py", "back_projection.py"});
 
 }  // namespace kessler::app

@@ -59,6 +59,7 @@ std::string plateProblem(const std::vector<BodyConfig>& bodies, const std::vecto
   const BodyConfig& body = bodies[static_cast<std::size_t>(b)];
   if (std::find(projectiles.begin(), projectiles.end(), b) != projectiles.end())
     return fmt::format("body '{}' is the projectile", body.name);
+  if (body.velocity.norm() > 0.0) return fmt::format("body '{}' moves: a plate is at rest", body.name);
   if (!isBox(body))
     return fmt::format("body '{}' is a {}: a plate must be a box", body.name, geometry::kindName(body.mesh.shape));
   const auto& box = std::get<geometry::Box>(body.mesh.shape);
@@ -162,16 +163,26 @@ AnalysisConfig parseAnalysis(const std::optional<Field>& field, const std::vecto
     return a;
   }
   const BodyConfig& lead = bodies[static_cast<std::size_t>(a.projectiles.front())];
-  a.impact_speed = lead.velocity.norm();
+  // The speed and direction of the shot are relative to the target: the first body that is not a
+  // projectile (at rest in a shield deck; moving in a collision of two satellites).
+  Vec3 target_velocity = Vec3::Zero();
+  for (int b = 0; b < static_cast<int>(bodies.size()); ++b)
+    if (std::find(a.projectiles.begin(), a.projectiles.end(), b) == a.projectiles.end()) {
+      target_velocity = bodies[static_cast<std::size_t>(b)].velocity;
+      break;
+    }
+  const Vec3 relative = lead.velocity - target_velocity;
+  a.impact_speed = relative.norm();
   if (!(a.impact_speed > 0.0))
-    where.failBare(fmt::format("the projectile '{}' does not move (velocity zero): nothing to analyse", lead.name));
+    where.failBare(
+        fmt::format("the projectile '{}' does not move relative to the target: nothing to analyse", lead.name));
 
   if (std::optional<Field> direction = find("shot_direction")) {
     const Vec3 d = direction->vector(units::dimensionless);
     if (!(d.norm() > 0.0)) direction->fail("must not be zero");
     a.shot_direction = d.normalized();
   } else {
-    a.shot_direction = lead.velocity.normalized();
+    a.shot_direction = relative.normalized();
   }
   const std::optional<Vec3> start = bodyCentre(lead);
 
@@ -182,9 +193,11 @@ AnalysisConfig parseAnalysis(const std::optional<Field>& field, const std::vecto
     a.plates = inferPlates(bodies, a.projectiles, a.shot_direction, *start);
   }
   if (a.plates.empty()) {
-    // A projectile on its own, or against imported meshes: no target to measure.
     if (field && plates) plates->failBare("must name at least one plate");
-    a.enabled = false;
+    // No plate: a collision of bodies (two satellites, or a projectile against an imported mesh)
+    // gets the fragments and the breakup model, without holes, clouds or a rear wall. A body on
+    // its own (a Taylor bar) has nothing to analyse.
+    if (bodies.size() < 2) a.enabled = false;
     return a;
   }
   if (plates) checkPlates(a, bodies, start, *plates);

@@ -145,10 +145,12 @@ void analysis(YAML::Emitter& out, const RunConfig& config) {
       out << YAML::EndSeq;
     };
     names("projectile", a.projectiles);
-    names("plates", a.plates);
     vector(out, "shot_direction", a.shot_direction, "unit vector");
-    out << YAML::Key << "cloud_reference" << YAML::Value
-        << config.bodies.at(static_cast<std::size_t>(a.plates.at(static_cast<std::size_t>(a.cloud_reference)))).name;
+    if (!a.plates.empty()) {  // none: a collision, inferred again on reading
+      names("plates", a.plates);
+      out << YAML::Key << "cloud_reference" << YAML::Value
+          << config.bodies.at(static_cast<std::size_t>(a.plates.at(static_cast<std::size_t>(a.cloud_reference)))).name;
+    }
   }
   scalar(out, "link_stretch", a.link_stretch, "");
   out << YAML::Key << "plots" << YAML::Value << (a.plots ? "true" : "false");

@@ -4,7 +4,8 @@ NASA standard breakup model's prediction for the same event.
 
     python3 tools/plots/fragments.py RUN_DIR
 
-Reads RUN_DIR/fragments.csv (columns lc_m and copies) and the model's parameters from
+Reads RUN_DIR/fragments.csv (columns lc_m, copies, points and body; with several bodies each
+body's distribution is drawn too) and the model's parameters from
 RUN_DIR/summary.json, object "analysis" -> "breakup_model" (keys coefficient, mass_exponent,
 length_exponent, reference_mass_kg, catastrophic; see docs/analysis.md), and writes
 RUN_DIR/plots/fragments.png.
@@ -23,17 +24,18 @@ def read_fragments(run):
     path = os.path.join(run, "fragments.csv")
     if not os.path.exists(path):
         kp.fail(f"'{path}' does not exist (the run writes it when its analysis runs)")
-    lc, copies, points = [], [], []
+    lc, copies, points, body = [], [], [], []
     with open(path, newline="", encoding="utf-8") as f:
         reader = csv.DictReader(f)
-        for column in ("lc_m", "copies", "points"):
+        for column in ("lc_m", "copies", "points", "body"):
             if column not in (reader.fieldnames or []):
                 kp.fail(f"'{path}' has no column '{column}'")
         for row in reader:
             lc.append(float(row["lc_m"]))
             copies.append(int(row["copies"]))
             points.append(int(row["points"]))
-    return lc, copies, points
+            body.append(row["body"])
+    return lc, copies, points, body
 
 
 def breakup_model(summary):
@@ -56,7 +58,7 @@ def main():
     import numpy as np
 
     run = kp.run_dir(args.run)
-    lc, copies, points = read_fragments(run)
+    lc, copies, points, body = read_fragments(run)
     summary = kp.load_summary(run)
     model = breakup_model(summary)
 
@@ -69,6 +71,14 @@ def main():
         counts = np.cumsum(np.asarray(copies)[positive][order])
         ax.step(sizes * 1e3, counts, where="post", color="tab:blue", linewidth=1.8,
                 label=f"simulation ({counts[-1]} fragments)")
+        # A collision of several bodies: each body's own distribution too.
+        names = np.asarray(body)[positive]
+        if len(set(names)) > 1:
+            for k, name in enumerate(dict.fromkeys(names)):
+                mine = names[order] == name
+                ax.step(sizes[mine] * 1e3, np.cumsum(np.asarray(copies)[positive][order][mine]), where="post",
+                        color=("tab:green", "tab:orange", "tab:purple", "tab:brown")[k % 4], linewidth=1.2,
+                        label=f"{name} ({int(np.asarray(copies)[positive][order][mine].sum())} fragments)")
         single = np.asarray(points)[positive] == 1
         if single.any():
             resolution = np.median(lc[positive][single])

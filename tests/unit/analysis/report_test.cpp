@@ -2,6 +2,7 @@
 #include "analysis/report.hpp"
 #include "synthetic.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -90,6 +91,16 @@ TEST(Report, FragmentFilesHaveUnitsAndOneRowPerFragment) {
   std::ifstream cumulative(dir / "fragments_cumulative.csv");
   std::getline(cumulative, header);
   EXPECT_EQ(header, "lc_m,count_ge_lc,nasa_count_ge_lc");
+  // One row per point: its id and its fragment's rank (0: broken), the same as the label.
+  std::ifstream points(dir / "fragment_points.csv");
+  std::getline(points, header);
+  EXPECT_EQ(header, "id,fragment");
+  std::size_t p = 0;
+  for (std::string line; std::getline(points, line); ++p) {
+    ASSERT_LT(p, report.fragments.label.size());
+    EXPECT_EQ(line, fmt::format("{},{}", w.model.points.id[static_cast<LocalIndex>(p)], report.fragments.label[p] + 1));
+  }
+  EXPECT_EQ(p, report.fragments.label.size());
   std::filesystem::remove_all(dir);
 }
 

@@ -102,5 +102,48 @@ TEST(DeckAnalysis, TheResolvedDeckReadsBackTheSame) {
   EXPECT_EQ(again.materials[0].impact.fracture_energy, 100e3);
 }
 
+// Two satellites meeting head-on (the finite-element-reconstruction paper's sphere and cube): no
+// plate, so the analysis is a collision's (fragments and the breakup model), at the relative speed.
+const std::string collision = R"(
+materials:
+  al: { library: Al2024-T351, density: 200 kg/m^3 }
+bodies:
+  - name: sphere
+    material: al
+    shape: { sphere: { center: [-0.6, 0, 0], radius: 0.5 } }
+    velocity: [7.6 km/s, 0, 0]
+    mesh_size: 0.1
+  - name: cube
+    material: al
+    shape: { box: { min: [0, -0.5, -0.5], max: [1, 0.5, 0.5] } }
+    velocity: [-7.6 km/s, 0, 0]
+    mesh_size: 0.1
+solver: { end_time: 350 us }
+)";
+
+TEST(DeckAnalysis, ACollisionWithoutPlatesIsAnalysedAtTheRelativeSpeed) {
+  const RunConfig c = parseDeckString(collision + "analysis: { projectile: sphere }\n", "deck.yaml");
+  const AnalysisConfig& a = c.analysis;
+  EXPECT_TRUE(a.enabled);
+  ASSERT_EQ(a.projectiles, std::vector<int>{0});
+  // The cube is a box on the shot line, but it moves: not a plate.
+  EXPECT_TRUE(a.plates.empty());
+  EXPECT_DOUBLE_EQ(a.impact_speed, 15200.0);
+  EXPECT_DOUBLE_EQ(a.shot_direction[0], 1.0);
+  const RunConfig again = parseDeckString(resolvedDeckText(c), "resolved.yaml");
+  EXPECT_TRUE(again.analysis.enabled);
+  EXPECT_EQ(again.analysis.projectiles, a.projectiles);
+  EXPECT_TRUE(again.analysis.plates.empty());
+  EXPECT_DOUBLE_EQ(again.analysis.impact_speed, 15200.0);
+}
+
+TEST(DeckAnalysis, BodiesThatAllMoveAreAllProjectilesWithoutATarget) {
+  // Both bodies are as fast: both are the projectile, the analysis has fragments but no target.
+  const AnalysisConfig a = parseDeckString(collision, "deck.yaml").analysis;
+  EXPECT_TRUE(a.enabled);
+  EXPECT_EQ(a.projectiles, (std::vector<int>{0, 1}));
+  EXPECT_DOUBLE_EQ(a.impact_speed, 7600.0);
+}
+
 }  // namespace
 }  // namespace kessler::io
