@@ -4,7 +4,7 @@
 3.1 km/s. Prints each code's microseconds per particle (material-point) step and core time,
 and the ratio. Needs Debian's python3-pysph; without it, says so and exits 0.
 
-usage: pysph_compare.py [--kessler PATH] [--threads N] [--steps N]
+usage: pysph_compare.py [--kessler PATH] [--threads N] [--steps N] [--method otm|sph]
 
 PySPH's cost per step is measured as the difference of two runs (--steps and 6 x --steps) of
 its example with output disabled, so that its set-up and code generation do not count.
@@ -52,11 +52,11 @@ def pysph_cost(steps, threads):
     return {"particles": particles, "us_per_particle_step": us, "core_us": us * threads}
 
 
-def kessler_cost(kessler, steps, threads):
+def kessler_cost(kessler, steps, threads, method):
     with tempfile.TemporaryDirectory() as out:
         report = os.path.join(out, "bench.json")
         subprocess.run([kessler, "bench", "pysph-impact3d", "--steps", str(steps), "--threads", str(threads),
-                        "--json", report], check=True)
+                        "--set", f"solver.method={method}", "--json", report], check=True)
         with open(report) as f:
             p = json.load(f)["problems"][0]
     return {"points": p["points"], "us_per_point_step": p["us_per_point_step"],
@@ -68,16 +68,17 @@ def main():
     parser.add_argument("--kessler", default="kessler")
     parser.add_argument("--threads", type=int, default=1)
     parser.add_argument("--steps", type=int, default=10)
+    parser.add_argument("--method", default="otm", choices=["otm", "sph"], help="Kessler's method (solver.method)")
     args = parser.parse_args()
     py = pysph_cost(args.steps, args.threads)
     if py is None:
         print("PySPH is not installed (Debian: apt install python3-pysph): nothing to compare.")
         print("Published figure (issue 5): about 76 us per particle-step per core for this example.")
         return 0
-    k = kessler_cost(args.kessler, args.steps, args.threads)
+    k = kessler_cost(args.kessler, args.steps, args.threads, args.method)
     print(f"PySPH   impact3d: {py['particles']} particles, {py['us_per_particle_step']:.3f} us per particle-step, "
           f"{py['core_us']:.3f} us core")
-    print(f"Kessler pysph-impact3d: {k['points']} material points, {k['us_per_point_step']:.3f} us per point-step, "
+    print(f"Kessler pysph-impact3d ({args.method}): {k['points']} material points, {k['us_per_point_step']:.3f} us per point-step, "
           f"{k['core_us']:.3f} us core")
     print(f"ratio (PySPH / Kessler, core time per particle-step): {py['core_us'] / k['core_us']:.2f}")
     return 0
