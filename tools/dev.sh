@@ -46,7 +46,8 @@ sanitizer_environment() {
 asan() {
   sanitizer_environment
   cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DKESSLER_SANITIZE=ON >/dev/null
-  cmake --build build-asan -j"$(nproc)"
+  # Only what the unit tests and the impact run need: the benches and multi-rank tests are not run here.
+  cmake --build build-asan -j"$(nproc)" --target unit_tests
   OMP_WAIT_POLICY=passive ctest --test-dir build-asan -L unit -j"$(nproc)" --output-on-failure
   build-asan/src/app/kessler run examples/elastic-sphere-plate.yaml --out build-asan/example-1us \
     --set solver.end_time="1 us" --set output.every="0.5 us" --quiet
