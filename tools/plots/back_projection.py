@@ -86,7 +86,10 @@ def main():
     for b in np.unique(body):
         mine = body == b
         layer = x[mine, normal][np.argmin(np.abs(x[mine, normal] - centre))]
-        in_slice |= mine & (np.abs(x[:, normal] - layer) <= 1e-6 * max(np.ptp(x[:, normal]), 1e-12))
+        # Within 0.45 of the body's mean spacing (from its box, which overestimates it): one layer of
+        # a lattice, a slab one point thick of a tet mesh's barycentres.
+        spacing = np.cbrt(np.prod(np.maximum(np.ptp(x[mine], axis=0), 1e-12)) / mine.sum())
+        in_slice |= mine & (np.abs(x[:, normal] - layer) < 0.45 * spacing)
     sizes, _ = np.histogram(label[label > 0], bins=np.arange(1, label.max() + 2)) if label.max() > 0 else ([], None)
     order = np.argsort(-np.asarray(sizes), kind="stable")[:min(args.largest, 10)] + 1 if len(sizes) else []
     palette = plt.get_cmap("tab10")
