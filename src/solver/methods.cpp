@@ -34,7 +34,7 @@ const std::vector<std::string>& methodNames() {
 std::unique_ptr<Method> makeMethod(const Problem& problem, const parallel::Communicator* ranks) {
   requireKnown(problem, ranks);
   if (problem.method == "sph")
-    return std::make_unique<sph::SphMethod>(sph::buildModel(problem), sph::settingsFor(problem));
+    return std::make_unique<sph::SphMethod>(sph::buildModel(problem), problem);
   return std::make_unique<otm::OtmMethod>(otm::buildModel(problem), problem, ranks);
 }
 

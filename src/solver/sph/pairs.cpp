@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include <omp.h>
+
 namespace kessler::sph {
 
 void Pairs::build(std::span<const Vec3> x, std::span<const double> h, LocalIndex count,
@@ -33,12 +35,22 @@ void Pairs::build(std::span<const Vec3> x, std::span<const double> h, LocalIndex
       });
     }
   };
+  // One pass over the cell list: each thread lists the pairs of a contiguous block of particles in
+  // its own buffer, and the blocks are joined in particle order, so the arrays are the same for any
+  // thread count.
   count_.assign(n, 0);
-#pragma omp parallel for schedule(dynamic, 256)
-  for (std::size_t i = 0; i < n; ++i) {
-    Index c = 0;
-    visit(i, [&](LocalIndex, std::uint8_t) { ++c; });
-    count_[i] = c;
+#pragma omp parallel
+  {
+#pragma omp single
+    found_.resize(static_cast<std::size_t>(omp_get_num_threads()));
+    std::vector<Found>& mine = found_[static_cast<std::size_t>(omp_get_thread_num())];
+    mine.clear();
+#pragma omp for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t before = mine.size();
+      visit(i, [&](LocalIndex j, std::uint8_t m) { mine.push_back({j, m}); });
+      count_[i] = static_cast<Index>(mine.size() - before);
+    }
   }
   for (std::size_t i = 0; i < n; ++i) offset[i + 1] = offset[i] + count_[i];
   const auto total = static_cast<std::size_t>(offset[n]);
@@ -47,19 +59,24 @@ void Pairs::build(std::span<const Vec3> x, std::span<const double> h, LocalIndex
   active.resize(total);
   gradient.resize(total);
   kernel.resize(total);
-#pragma omp parallel for schedule(dynamic, 256)
-  for (std::size_t i = 0; i < n; ++i) {
-    auto e = static_cast<std::size_t>(offset[i]);
-    visit(i, [&](LocalIndex j, std::uint8_t m) {
-      const Vec3 d = x[i] - reflect(x[static_cast<std::size_t>(j)], m);
-      const double r = d.norm(), h_ij = 0.5 * (h[i] + h[static_cast<std::size_t>(j)]);
-      other[e] = j;
-      mirror[e] = m;
+  // Thread t's block begins at the pairs of all blocks before it (as listed under schedule(static)).
+  std::vector<std::size_t> first(found_.size() + 1, 0);
+  for (std::size_t t = 0; t < found_.size(); ++t) first[t + 1] = first[t] + found_[t].size();
+#pragma omp parallel for schedule(static, 1)
+  for (std::size_t t = 0; t < found_.size(); ++t)
+    for (std::size_t k = 0; k < found_[t].size(); ++k) {
+      other[first[t] + k] = found_[t][k].j;
+      mirror[first[t] + k] = found_[t][k].mirror;
+    }
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i)
+    for (auto e = static_cast<std::size_t>(offset[i]); e < static_cast<std::size_t>(offset[i + 1]); ++e) {
+      const auto j = static_cast<std::size_t>(other[e]);
+      const Vec3 d = x[i] - reflect(x[j], mirror[e]);
+      const double r = d.norm(), h_ij = 0.5 * (h[i] + h[j]);
       kernel[e] = CubicSpline::value(r, h_ij);
       gradient[e] = r > 0.0 ? Vec3(CubicSpline::slope(r, h_ij) / r * d) : Vec3::Zero();
-      ++e;
-    });
-  }
+    }
 }
 
 }  // namespace kessler::sph

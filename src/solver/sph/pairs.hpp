@@ -44,8 +44,13 @@ struct Pairs {
   Index size() const { return static_cast<Index>(other.size()); }
 
  private:
+  struct Found {
+    LocalIndex j;
+    std::uint8_t mirror;
+  };
   CellList cells_;
   std::vector<Index> count_;
+  std::vector<std::vector<Found>> found_;  // each thread's pairs, in particle order
 };
 
 }  // namespace kessler::sph

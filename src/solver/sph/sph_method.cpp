@@ -1,19 +1,34 @@
 #include "solver/sph/sph_method.hpp"
 
 #include "core/error.hpp"
+#include "solver/sph/setup.hpp"
 
 #include <fmt/format.h>
 
 namespace kessler::sph {
 
 Settings settingsFor(const Problem& problem) {
-  for (const PlaneConstraint& plane : problem.planes)
-    if (plane.history) throw Error("SPH does not yet take a prescribed velocity history (a verification problem's)");
   return Settings{problem.settings.solver, problem.settings.sph, problem.walls, problem.symmetry_axes};
 }
 
 SphMethod::SphMethod(Model model, const Settings& settings)
     : model_(std::move(model)), integrator_(model_, settings), diagnostics_(settings.solver) {}
+
+SphMethod::SphMethod(Model model, const Problem& problem) : SphMethod(std::move(model), settingsFor(problem)) {
+  // The particles never move between stores or ranks: their indices hold for the run.
+  for (const PlaneConstraint& plane : problem.planes)
+    if (plane.history) histories_.push_back({plane.axis, plane.history, particlesOnPlane(model_, plane)});
+}
+
+void SphMethod::step() {
+  // The histories at the middle of the step, as OTM's.
+  const Clock c = integrator_.clock();
+  for (const History& h : histories_) {
+    const double v = h.velocity(c.time + 0.5 * c.dt_next);
+    for (const LocalIndex p : h.particles) model_.prescribed_v[p][h.axis] = v;
+  }
+  integrator_.step();
+}
 
 void SphMethod::check(double initial_total_energy) {
   const Clock c = integrator_.clock();

@@ -6,6 +6,9 @@
 #include "solver/sph/integrator.hpp"
 #include "solver/sph/model.hpp"
 
+#include <functional>
+#include <vector>
+
 namespace kessler::sph {
 
 // SPH's settings for a problem.
@@ -15,12 +18,15 @@ class SphMethod final : public Method {
  public:
   // One process only: SPH does not yet run on several ranks (docs/parallel.md).
   SphMethod(Model model, const Settings& settings);
+  // A new run of `problem`: its planes' velocity histories are taken up (a restored run, built
+  // from its settings alone, does not take them up, as OTM's).
+  SphMethod(Model model, const Problem& problem);
   SphMethod(const SphMethod&) = delete;
   SphMethod& operator=(const SphMethod&) = delete;
 
   const char* name() const override { return "sph"; }
   void initialise() override { integrator_.initialise(); }
-  void step() override { integrator_.step(); }
+  void step() override;
   void check(double initial_total_energy) override;
   bool finished() const override { return integrator_.finished(); }
   double endTime() const override { return integrator_.settings().solver.end_time; }
@@ -40,9 +46,17 @@ class SphMethod final : public Method {
   const Integrator& integrator() const { return integrator_; }
 
  private:
+  // A plane's particles whose prescribed velocity component follows a history.
+  struct History {
+    int axis = 0;
+    std::function<double(double)> velocity;
+    std::vector<LocalIndex> particles;
+  };
+
   Model model_;
   Integrator integrator_;  // holds a reference to model_
   PointDiagnostics diagnostics_;
+  std::vector<History> histories_;
 };
 
 }  // namespace kessler::sph
