@@ -1,9 +1,11 @@
 // Resolution study of the copper Taylor bar (docs/validation.md): runs verify::runTaylorBar at
 // each mesh size given in mm on the command line and prints points, steps, wall time, final length
 // and footprint radius. Options first: `--cfl X` changes the factor on the time step (default
-// 0.3), `--no-volume-averaging` turns solver.otm.volume_averaging off. Not a test: the sizes near the
+// 0.3), `--no-volume-averaging` turns solver.otm.volume_averaging off, `--method sph` runs SPH
+// (default otm). Not a test: the sizes near the
 // 0.8 mm benchmark take minutes.
 #include "core/error.hpp"
+#include "verify/fixtures.hpp"
 #include "verify/impact_problems.hpp"
 
 #include <fmt/format.h>
@@ -21,6 +23,9 @@ int main(int argc, char** argv) {
   for (;;) {
     if (argc > first + 1 && std::string(argv[first]) == "--cfl") {
       cfl = std::atof(argv[first + 1]);
+      first += 2;
+    } else if (argc > first + 1 && std::string(argv[first]) == "--method") {
+      kessler::verify::useMethod(argv[first + 1]);
       first += 2;
     } else if (argc > first && std::string(argv[first]) == "--no-volume-averaging") {
       volume_averaging = false;

@@ -41,9 +41,9 @@ struct Fragment {
 
 struct FragmentSet {
   std::vector<Fragment> fragments;  // by mass, largest first (ties: first_point)
-  std::vector<LocalIndex> label;    // per point: index into fragments, -1 if eroded
+  std::vector<LocalIndex> label;    // per point: index into fragments, -1 if eroded or loose
   std::vector<Index> point_id;      // per point: its id (PointStore::id), to find it in the outputs
-  std::vector<double> eroded_mass;  // per body, kg in the full model: sub-resolution debris
+  std::vector<double> eroded_mass;  // per body, kg in the full model: sub-resolution debris (eroded or loose)
   std::vector<double> body_mass;    // per body, kg in the full model
   double link_stretch = 0.0;
   LocalIndex links = 0, broken_links = 0;

@@ -12,6 +12,7 @@
 #include <array>
 #include <optional>
 #include <span>
+#include <string_view>
 
 namespace kessler::io {
 namespace {
@@ -20,7 +21,7 @@ namespace {
 // 6: bodies are identified by their points' `body` alone (format 5 also stored each body's point and
 // node ranges, which this reader ignores), and the links by point id (format 5: by index in the
 // store, which this reader turns into ids).
-constexpr std::int64_t format_version = 6, oldest_format_read = 5;
+constexpr std::int64_t format_version = 7, oldest_format_read = 5;
 
 // Vec3 and Mat3 are stored as runs of 3 and 9 doubles, straight from the store.
 static_assert(sizeof(Vec3) == 3 * sizeof(double));
@@ -244,8 +245,12 @@ Restored readCheckpoint(const std::filesystem::path& file, const std::vector<Mat
 
   ParticleState model;
   const std::size_t np = own.length("/points/x");
-  PointStore::fields(model.points, [&](const char* name, auto& values, const auto&) {
-    readArray(h5, fmt::format("/points/{}", name), values, np);
+  PointStore::fields(model.points, [&](const char* name, auto& values, const auto& fresh) {
+    // Formats before 7 had no loose points (PointStore::loose): none was.
+    if (version < 7 && std::string_view(name) == "loose")
+      values.assign(np, fresh);
+    else
+      readArray(h5, fmt::format("/points/{}", name), values, np);
   });
   model.points.owned = static_cast<LocalIndex>(h5.readInt64Attribute("points_owned"));
   if (model.points.owned != model.points.size())

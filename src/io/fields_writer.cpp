@@ -102,6 +102,7 @@ void writePoints(Hdf5Writer& h5, const std::string& file, const PointStore& poin
   out.scalar("temperature", ownedPrefix(points.temperature, points.owned, "points.temperature"));
   out.scalar("volume", ownedPrefix(points.volume, points.owned, "points.volume"));
   out.scalar("eroded", ownedPrefix(points.broken, points.owned, "points.broken"));
+  out.scalar("loose", ownedPrefix(points.loose, points.owned, "points.loose"));
   out.scalar("carrier", ownedPrefix(points.carrier, points.owned, "points.carrier"));
   out.scalar("body", ownedPrefix(points.body, points.owned, "points.body"));
   out.scalar("id", ownedPrefix(points.id, points.owned, "points.id"));

@@ -48,6 +48,10 @@ struct PointStore {
   // 1 once the point has broken (eigenerosion, damage or spall): no strength, no tension; failed(p)
   // while it stays in its body, debris(p) once released (stored and written as "eroded").
   std::vector<std::uint8_t> broken;
+  // 1 once the point belongs to no fragment although its material is intact: an SPH element failed
+  // by its distortion (docs/theory.md §10), whose reconstructed shape no longer says which
+  // neighbours it holds on to. The laws see intact material; the fragment analysis, free mass.
+  std::vector<std::uint8_t> loose;
   // Debris contact (solver/common/debris_contact.hpp), for broken points: bit b set if body b cannot stop
   // the point (its own body and the bodies that body touched when it was released; 0 before),
   // and the body whose nodes carry it: its own while it is failed but not yet released, none once
@@ -84,10 +88,11 @@ struct PointStore {
     visit("volume_defect", s.volume_defect, 0.0);
     visit("be", s.be, identity);
     visit("eroded", s.broken, std::uint8_t{0});
+    visit("loose", s.loose, std::uint8_t{0});
     visit("passes_through", s.passes_through, std::int64_t{0});
     visit("carrier", s.carrier, std::int32_t{-1});
   }
-  static constexpr int field_count = 25;
+  static constexpr int field_count = 26;
 
   LocalIndex size() const { return static_cast<LocalIndex>(x.size()); }
   void resize(std::size_t n);

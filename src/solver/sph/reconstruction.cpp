@@ -63,13 +63,13 @@ void Reconstruction::rebuild(const Model& model) {
     int intact = 0, present = 0;
     for (const LocalIndex p : elements) {
       present += p >= 0;
-      intact += p >= 0 && !points.broken[p];
+      intact += p >= 0 && !points.broken[p] && !points.loose[p];
     }
     // Beside failed material only: from every element, failed ones too (it is drawn, never judged).
     const bool all = intact == 0;
     Vec3 x = Vec3::Zero(), v = Vec3::Zero();
     for (const LocalIndex p : elements) {
-      if (p < 0 || (!all && points.broken[p])) continue;
+      if (p < 0 || (!all && (points.broken[p] || points.loose[p]))) continue;
       x += intact == 8 ? points.x[p] : Vec3(points.x[p] + points.F[p] * (reference_[a] - particle_reference_[p]));
       v += points.v[p];
     }
@@ -85,7 +85,7 @@ LocalIndex Reconstruction::failDistorted(Model& model, double min_quality) {
 #pragma omp parallel for schedule(static)
   for (LocalIndex p = 0; p < points.owned; ++p) {
     const std::array<LocalIndex, 8>& nodes = element_nodes_[p];
-    if (nodes[0] < 0 || points.broken[p]) {
+    if (nodes[0] < 0 || points.broken[p] || points.loose[p]) {
       quality_[p] = std::numeric_limits<double>::quiet_NaN();
       continue;
     }
@@ -104,13 +104,12 @@ LocalIndex Reconstruction::failDistorted(Model& model, double min_quality) {
     quality_[p] = quality;
     fail[p] = !(quality >= min_quality);
   }
+  // The element fails, not its material: the particle keeps its state and strength (a copper Taylor
+  // bar's rim shears through the threshold without fracture), and belongs to no fragment.
   LocalIndex failed = 0;
   for (LocalIndex p = 0; p < points.owned; ++p) {
     if (!fail[p]) continue;
-    points.fail(p);
-    // As eigenerosion's: the failed point keeps its compression only.
-    const double pressure = -points.stress[p].trace() / 3.0;
-    points.stress[p] = -std::max(pressure, 0.0) * Mat3::Identity();
+    points.loose[p] = 1;
     ++failed;
   }
   return failed;

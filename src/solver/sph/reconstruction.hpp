@@ -11,9 +11,10 @@
 // An intact element fails when its reconstructed shape is too distorted: the smallest scaled
 // Jacobian of its eight corners (det of the corner's three edges over the product of their
 // lengths: 1 for a cube, the sine of the corner's angle under shear, negative when inverted) below
-// the threshold. Its particle fails (PointStore::fail): broken material, a free particle, no longer
-// part of a trusted fragment. Material failure (eigenerosion, Johnson-Cook damage, spall) fails an
-// element the same way. Trusted fragments are the connected components of intact elements that share
+// the threshold. Its particle becomes loose (PointStore::loose): a free particle, no longer part of
+// a trusted fragment, whose material keeps its state and strength (the threshold is a limit of the
+// reconstruction, not a fracture criterion). Material failure (eigenerosion, Johnson-Cook damage,
+// spall) fails an element too, and its material. Trusted fragments are the connected components of intact elements that share
 // a node (the lattice's adjacency; analysis/fragments.hpp).
 #include "solver/common/node_cloud.hpp"
 #include "solver/sph/model.hpp"
@@ -29,11 +30,11 @@ class Reconstruction {
   explicit Reconstruction(const Model& model);
   // The nodes from the particles' current state.
   void rebuild(const Model& model);
-  // Fails every intact particle whose element's quality is below `min_quality` (after rebuild);
-  // returns how many failed.
+  // Makes loose every intact particle whose element's quality is below `min_quality` (after
+  // rebuild); returns how many.
   LocalIndex failDistorted(Model& model, double min_quality);
   // The smallest scaled corner Jacobian of particle p's element at the last failDistorted (1: a cube);
-  // NaN for a particle without an element, or broken before it.
+  // NaN for a particle without an element, or broken or loose before it.
   double quality(LocalIndex p) const { return quality_[static_cast<std::size_t>(p)]; }
   NodeCloud cloud() const;
 

@@ -98,6 +98,22 @@ TEST(Fragments, ChainBrokenByAnErodedPoint) {
   EXPECT_EQ(set.broken_links, 2);
 }
 
+// A loose point (an SPH element failed by its distortion, its material intact) cuts the chain as an
+// eroded one does, and its mass is free mass.
+TEST(Fragments, ChainCutByALoosePoint) {
+  otm::Model model;
+  std::vector<Vec3> chain;
+  for (int i = 0; i < 5; ++i) chain.emplace_back(i * mm, 0, 0);
+  const int body = addCloud(model, "chain", chain, 1e-9);
+  for (LocalIndex i = 0; i < 4; ++i) model.adjacency.push_back({i, i + 1});
+  model.points.loose[1] = 1;
+  const FragmentSet set = findFragments(model, referenceLinkLengths(model), {});
+  ASSERT_EQ(set.fragments.size(), 2u);
+  EXPECT_EQ(set.label, (std::vector<LocalIndex>{1, -1, 0, 0, 0}));
+  EXPECT_DOUBLE_EQ(set.eroded_mass[body], rho * 1e-9);
+  EXPECT_EQ(set.broken_links, 2);
+}
+
 TEST(Fragments, SeparationWithoutErosionSplitsAndStretchDoesNot) {
   otm::Model model;
   addBlock(model, "plate", {Vec3(0, 0, 0), Vec3(6 * mm, 3 * mm, 1.5 * mm)}, {12, 6, 3});
