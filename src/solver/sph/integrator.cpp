@@ -233,7 +233,8 @@ void Integrator::forces() {
       const double mu = h_ij * approach / (d.squaredNorm() + 0.01 * h_ij * h_ij);
       const double rho = 0.5 * (a.density + b.density);
       const double alpha = 0.5 * (a.alpha + b.alpha);
-      const double viscosity = alpha * (-0.5 * (a.sound_speed + b.sound_speed) * mu + o.viscosity_ratio * mu * mu) / rho;
+      const double viscosity =
+          alpha * (-0.5 * (a.sound_speed + b.sound_speed) * mu + o.viscosity_ratio * mu * mu) / rho;
       const double mm = a.mass * b.mass;
       f.noalias() -= mm * viscosity * grad;
       power += 0.5 * mm * viscosity * v.dot(grad);

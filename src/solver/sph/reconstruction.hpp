@@ -14,8 +14,8 @@
 // the threshold. Its particle becomes loose (PointStore::loose): a free particle, no longer part of
 // a trusted fragment, whose material keeps its state and strength (the threshold is a limit of the
 // reconstruction, not a fracture criterion). Material failure (eigenerosion, Johnson-Cook damage,
-// spall) fails an element too, and its material. Trusted fragments are the connected components of intact elements that share
-// a node (the lattice's adjacency; analysis/fragments.hpp).
+// spall) fails an element too, and its material. Trusted fragments are the connected components of
+// intact elements that share a node (the lattice's adjacency; analysis/fragments.hpp).
 #include "solver/common/node_cloud.hpp"
 #include "solver/sph/model.hpp"
 
