@@ -20,7 +20,8 @@ namespace {
 // Bumped whenever the layout changes; an older or newer checkpoint is refused with a message.
 // 6: bodies are identified by their points' `body` alone (format 5 also stored each body's point and
 // node ranges, which this reader ignores), and the links by point id (format 5: by index in the
-// store, which this reader turns into ids).
+// store, which this reader turns into ids). 7: the points' loose flags (PointStore::loose; read as
+// none loose from older formats).
 constexpr std::int64_t format_version = 7, oldest_format_read = 5;
 
 // Vec3 and Mat3 are stored as runs of 3 and 9 doubles, straight from the store.

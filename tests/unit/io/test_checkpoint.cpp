@@ -197,6 +197,7 @@ TEST_F(CheckpointTest, ReadsTheLinksOfAFormat5CheckpointByIndex) {
     const hid_t id_set = H5Dopen2(f, "/points/id", H5P_DEFAULT);
     ASSERT_GE(H5Dwrite(id_set, H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, ids.data()), 0);
     H5Dclose(id_set);
+    ASSERT_GE(H5Ldelete(f, "/points/loose", H5P_DEFAULT), 0);  // new in format 7
     ASSERT_GE(H5Ldelete(f, "/adjacency/pairs", H5P_DEFAULT), 0);
     const hsize_t dims[2] = {model.adjacency.size(), 2};
     const hid_t space = H5Screate_simple(2, dims, nullptr);
@@ -209,6 +210,27 @@ TEST_F(CheckpointTest, ReadsTheLinksOfAFormat5CheckpointByIndex) {
   const Restored read = readCheckpoint(file, {material_}, otmFor);
   EXPECT_EQ(asOtm(*read.method).model().points.id, ids);
   EXPECT_EQ(asOtm(*read.method).model().adjacency, expected);
+}
+
+// Format 6 had no loose flags (PointStore::loose, new in format 7): its points read as none loose.
+TEST_F(CheckpointTest, AFormat6CheckpointHasNoLoosePoints) {
+  const std::unique_ptr<otm::OtmMethod> method = twoBlocksAfter(material_, 2);
+  const fs::path file = dir_ / "checkpoint.h5";
+  writeCheckpoint(file, *method, someLoopState(*method));
+  {
+    const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    ASSERT_GE(f, 0);
+    const hid_t attr = H5Aopen(f, "kessler_checkpoint_format", H5P_DEFAULT);
+    const std::int64_t six = 6;
+    ASSERT_GE(H5Awrite(attr, H5T_NATIVE_INT64, &six), 0);
+    H5Aclose(attr);
+    ASSERT_GE(H5Ldelete(f, "/points/loose", H5P_DEFAULT), 0);
+    H5Fclose(f);
+  }
+  const Restored read = readCheckpoint(file, {material_}, otmFor);
+  const PointStore& points = asOtm(*read.method).model().points;
+  EXPECT_EQ(points.loose, std::vector<std::uint8_t>(points.x.size(), 0));
+  EXPECT_EQ(points.x, method->model().points.x);
 }
 
 TEST_F(CheckpointTest, ARestartedRunIsBitwiseTheUninterruptedRun) {
