@@ -168,27 +168,12 @@ void Integrator::forces() {
   acceleration_.resize(n);
   viscous_power_.resize(n);
   signal_.resize(n);
-  // What a pair reads of its other particle, packed per particle (two cache lines, not a dozen
-  // arrays), and its sigma B^T and artificial stress R (tensile principal stresses only).
-  neighbour_.resize(n);
-  tensors_.resize(n);
+  // Per particle: sigma B^T, and the artificial stress R (tensile principal stresses only).
+  std::vector<Mat3> stress_b(n), artificial(n);
 #pragma omp parallel for schedule(static)
   for (LocalIndex p = 0; p < points.owned; ++p) {
-    Neighbour& b = neighbour_[p];
-    b.x = points.x[p];
-    b.v = points.v[p];
-    b.volume = points.volume[p];
-    b.mass = points.mass[p];
-    b.density = points.density(p);
-    b.sound_speed = points.debris(p) ? 0.0 : points.sound_speed[p];
-    b.h = h_[p];
-    b.spacing = spacing_[p];
-    b.alpha = model_.viscosity[p];
-    b.body = points.body[p];
-    b.broken = points.broken[p];
-    Tensors& t = tensors_[p];
-    t.stress_b = points.stress[p] * correction_[p].transpose();
-    t.artificial.setZero();
+    stress_b[p] = points.stress[p] * correction_[p].transpose();
+    artificial[p].setZero();
     if (points.broken[p] || o.artificial_stress <= 0.0) continue;
     Eigen::SelfAdjointEigenSolver<Mat3> principal;
     principal.computeDirect(points.stress[p]);
@@ -197,7 +182,7 @@ void Integrator::forces() {
       const double s = principal.eigenvalues()[a];
       if (s > 0.0) {
         const Vec3 e = principal.eigenvectors().col(a);
-        t.artificial.noalias() -= o.artificial_stress * s / rho2 * e * e.transpose();
+        artificial[p].noalias() -= o.artificial_stress * s / rho2 * e * e.transpose();
       }
     }
   }
@@ -205,42 +190,39 @@ void Integrator::forces() {
   for (LocalIndex i = 0; i < points.owned; ++i) {
     Vec3 f = Vec3::Zero();
     double power = 0.0, signal = 0.0;
-    const Neighbour& a = neighbour_[i];
-    const Tensors& ti = tensors_[i];
+    const double rho_i = points.density(i), c_i = points.debris(i) ? 0.0 : points.sound_speed[i];
     for (Index e = pairs_.offset[i]; e < pairs_.offset[i + 1]; ++e) {
       const LocalIndex j = pairs_.other[e];
-      const Neighbour& b = neighbour_[j];
       const std::uint8_t m = pairs_.mirror[e];
       const Vec3& grad = pairs_.gradient[e];
       if (pairs_.active[e]) {
-        const Tensors& tj = tensors_[j];
-        const Mat3 sum = ti.stress_b + reflect(tj.stress_b, m);
-        f.noalias() += a.volume * b.volume * (sum * grad);
-        if (o.artificial_stress > 0.0 && a.body == b.body && !a.broken && !b.broken) {
-          const double h_ij = 0.5 * (a.h + b.h);
-          const double reference = CubicSpline::value(0.5 * (a.spacing + b.spacing), h_ij);
+        const Mat3 sum = stress_b[i] + reflect(stress_b[j], m);
+        f.noalias() += points.volume[i] * points.volume[j] * (sum * grad);
+        if (o.artificial_stress > 0.0 && points.body[i] == points.body[j] && !points.broken[i] && !points.broken[j]) {
+          const double h_ij = 0.5 * (h_[i] + h_[j]);
+          const double reference = CubicSpline::value(0.5 * (spacing_[i] + spacing_[j]), h_ij);
           const double ratio = reference > 0.0 ? std::min(pairs_.kernel[e] / reference, 1.0) : 0.0;
           double fn = 1.0;
           for (int k = 0; k < o.artificial_stress_exponent; ++k) fn *= ratio;
-          f.noalias() += a.mass * b.mass * fn * ((ti.artificial + reflect(tj.artificial, m)) * grad);
+          f.noalias() += points.mass[i] * points.mass[j] * fn * ((artificial[i] + reflect(artificial[j], m)) * grad);
         }
       }
-      const Vec3 d = a.x - reflect(b.x, m);
-      const Vec3 v = a.v - reflect(b.v, m);
+      const Vec3 d = points.x[i] - reflect(points.x[j], m);
+      const Vec3 v = points.v[i] - reflect(points.v[j], m);
       const double approach = v.dot(d);
       if (approach >= 0.0) continue;
-      const double h_ij = 0.5 * (a.h + b.h);
+      const double h_ij = 0.5 * (h_[i] + h_[j]);
       const double mu = h_ij * approach / (d.squaredNorm() + 0.01 * h_ij * h_ij);
-      const double rho = 0.5 * (a.density + b.density);
-      const double alpha = 0.5 * (a.alpha + b.alpha);
-      const double viscosity =
-          alpha * (-0.5 * (a.sound_speed + b.sound_speed) * mu + o.viscosity_ratio * mu * mu) / rho;
-      const double mm = a.mass * b.mass;
+      const double c_j = points.debris(j) ? 0.0 : points.sound_speed[j];
+      const double rho = 0.5 * (rho_i + points.density(j));
+      const double alpha = 0.5 * (model_.viscosity[i] + model_.viscosity[j]);
+      const double viscosity = alpha * (-0.5 * (c_i + c_j) * mu + o.viscosity_ratio * mu * mu) / rho;
+      const double mm = points.mass[i] * points.mass[j];
       f.noalias() -= mm * viscosity * grad;
       power += 0.5 * mm * viscosity * v.dot(grad);
       signal = std::max(signal, -mu);
     }
-    acceleration_[i] = f / a.mass;
+    acceleration_[i] = f / points.mass[i];
     viscous_power_[i] = power;
     signal_[i] = signal;
   }

@@ -22,7 +22,6 @@
 #include "solver/sph/pairs.hpp"
 #include "solver/sph/reconstruction.hpp"
 
-#include <cstdint>
 #include <vector>
 
 namespace kessler::sph {
@@ -89,18 +88,6 @@ class Integrator {
   std::vector<double> volume_rate_;    // ln J / dt of the last step
   std::vector<double> heat_;
   std::vector<int> struck_;  // the body each debris particle met at the last search, -1 none
-  // forces()'s copy of what a pair reads of a particle, in one place.
-  struct alignas(64) Neighbour {
-    Vec3 x, v;
-    double volume, mass, density, sound_speed, h, spacing, alpha;
-    std::int32_t body;
-    std::uint8_t broken;
-  };
-  struct Tensors {
-    Mat3 stress_b, artificial;  // sigma B^T; the artificial stress
-  };
-  std::vector<Neighbour> neighbour_;
-  std::vector<Tensors> tensors_;
   LocalIndex uncorrected_ = 0;
 };
 
