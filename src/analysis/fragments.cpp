@@ -184,7 +184,7 @@ FragmentSet findFragments(const ParticleState& model, const std::vector<double>&
       first_bad = std::min(first_bad, k);
       continue;
     }
-    if (points.broken[i] || points.broken[j] || points.loose[i] || points.loose[j]) continue;
+    if (points.unlinked(i) || points.unlinked(j)) continue;
     const double initial = set.reference_lengths
                                ? reference_lengths[k]
                                : estimated_link_per_spacing * 0.5 * (points.spacing0[i] + points.spacing0[j]);
@@ -205,7 +205,7 @@ FragmentSet findFragments(const ParticleState& model, const std::vector<double>&
   set.label.assign(static_cast<std::size_t>(n), -1);
   LocalIndex fragments = 0;
   for (LocalIndex p = 0; p < n; ++p) {
-    if (points.broken[p] || points.loose[p]) continue;
+    if (points.unlinked(p)) continue;
     const LocalIndex root = sets.find(p);
     if (root_label[root] < 0) root_label[root] = fragments++;
     set.label[p] = root_label[root];
@@ -243,7 +243,7 @@ FragmentSet findFragments(const ParticleState& model, const std::vector<double>&
   for (LocalIndex p = 0; p < n; ++p) {
     const double m = points.mass[p] * mirror.images();
     set.body_mass[points.body[p]] += m;
-    if (points.broken[p] || points.loose[p]) set.eroded_mass[points.body[p]] += m;
+    if (points.unlinked(p)) set.eroded_mass[points.body[p]] += m;
   }
   return set;
 }

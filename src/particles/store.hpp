@@ -104,6 +104,8 @@ struct PointStore {
   // released once it bears no compression: ballistic, pushed back by the bodies it strikes.
   bool failed(LocalIndex p) const { return broken[p] && carrier[p] == body[p]; }
   bool debris(LocalIndex p) const { return broken[p] && carrier[p] != body[p]; }
+  // In no fragment: broken, or loose (its material intact).
+  bool unlinked(LocalIndex p) const { return broken[p] || loose[p]; }
   // An intact point fails: it stays in its body until the integrator releases it.
   void fail(LocalIndex p) {
     broken[p] = 1;

@@ -63,13 +63,13 @@ void Reconstruction::rebuild(const Model& model) {
     int intact = 0, present = 0;
     for (const LocalIndex p : elements) {
       present += p >= 0;
-      intact += p >= 0 && !points.broken[p] && !points.loose[p];
+      intact += p >= 0 && !points.unlinked(p);
     }
     // Beside failed material only: from every element, failed ones too (it is drawn, never judged).
     const bool all = intact == 0;
     Vec3 x = Vec3::Zero(), v = Vec3::Zero();
     for (const LocalIndex p : elements) {
-      if (p < 0 || (!all && (points.broken[p] || points.loose[p]))) continue;
+      if (p < 0 || (!all && points.unlinked(p))) continue;
       x += intact == 8 ? points.x[p] : Vec3(points.x[p] + points.F[p] * (reference_[a] - particle_reference_[p]));
       v += points.v[p];
     }
@@ -85,7 +85,7 @@ LocalIndex Reconstruction::failDistorted(Model& model, double min_quality) {
 #pragma omp parallel for schedule(static)
   for (LocalIndex p = 0; p < points.owned; ++p) {
     const std::array<LocalIndex, 8>& nodes = element_nodes_[p];
-    if (nodes[0] < 0 || points.broken[p] || points.loose[p]) {
+    if (nodes[0] < 0 || points.unlinked(p)) {
       quality_[p] = std::numeric_limits<double>::quiet_NaN();
       continue;
     }

@@ -79,12 +79,18 @@ TEST(Fragments, TwoSeparatedBlocksInOneBody) {
   for (LocalIndex p = 0; p < model.points.size(); ++p) EXPECT_EQ(set.label[p], model.points.x[p][0] < 10 * mm ? 0 : 1);
 }
 
-TEST(Fragments, ChainBrokenByAnErodedPoint) {
-  otm::Model model;
+// Five points 1 mm apart in a row, each linked to the next; returns their body.
+int addChainOfFive(otm::Model& model) {
   std::vector<Vec3> chain;
   for (int i = 0; i < 5; ++i) chain.emplace_back(i * mm, 0, 0);
   const int body = addCloud(model, "chain", chain, 1e-9);
   for (LocalIndex i = 0; i < 4; ++i) model.adjacency.push_back({i, i + 1});
+  return body;
+}
+
+TEST(Fragments, ChainBrokenByAnErodedPoint) {
+  otm::Model model;
+  const int body = addChainOfFive(model);
   model.points.broken[2] = 1;
   const FragmentSet set = findFragments(model, referenceLinkLengths(model), {});
   ASSERT_EQ(set.fragments.size(), 2u);
@@ -102,10 +108,7 @@ TEST(Fragments, ChainBrokenByAnErodedPoint) {
 // eroded one does, and its mass is free mass.
 TEST(Fragments, ChainCutByALoosePoint) {
   otm::Model model;
-  std::vector<Vec3> chain;
-  for (int i = 0; i < 5; ++i) chain.emplace_back(i * mm, 0, 0);
-  const int body = addCloud(model, "chain", chain, 1e-9);
-  for (LocalIndex i = 0; i < 4; ++i) model.adjacency.push_back({i, i + 1});
+  const int body = addChainOfFive(model);
   model.points.loose[1] = 1;
   const FragmentSet set = findFragments(model, referenceLinkLengths(model), {});
   ASSERT_EQ(set.fragments.size(), 2u);

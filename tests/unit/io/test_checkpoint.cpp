@@ -165,6 +165,16 @@ TEST_F(CheckpointTest, RestoresTheModelAndTheRunStateBitwise) {
   EXPECT_EQ(read.loop.node_grids.size(), 2u);
 }
 
+// An open checkpoint file made to look like one of an older format: its format number, and no loose
+// flags (new in format 7).
+void asFormatBefore7(hid_t f, std::int64_t version) {
+  const hid_t attr = H5Aopen(f, "kessler_checkpoint_format", H5P_DEFAULT);
+  ASSERT_GE(attr, 0);
+  ASSERT_GE(H5Awrite(attr, H5T_NATIVE_INT64, &version), 0);
+  H5Aclose(attr);
+  ASSERT_GE(H5Ldelete(f, "/points/loose", H5P_DEFAULT), 0);
+}
+
 // Format 5 stored the links by index in the store (which the Morton sort had reordered, so that
 // indices and ids differ); the reader turns them into the points' ids.
 TEST_F(CheckpointTest, ReadsTheLinksOfAFormat5CheckpointByIndex) {
@@ -190,14 +200,10 @@ TEST_F(CheckpointTest, ReadsTheLinksOfAFormat5CheckpointByIndex) {
   {
     const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
     ASSERT_GE(f, 0);
-    const hid_t attr = H5Aopen(f, "kessler_checkpoint_format", H5P_DEFAULT);
-    const std::int64_t five = 5;
-    ASSERT_GE(H5Awrite(attr, H5T_NATIVE_INT64, &five), 0);
-    H5Aclose(attr);
+    asFormatBefore7(f, 5);
     const hid_t id_set = H5Dopen2(f, "/points/id", H5P_DEFAULT);
     ASSERT_GE(H5Dwrite(id_set, H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, ids.data()), 0);
     H5Dclose(id_set);
-    ASSERT_GE(H5Ldelete(f, "/points/loose", H5P_DEFAULT), 0);  // new in format 7
     ASSERT_GE(H5Ldelete(f, "/adjacency/pairs", H5P_DEFAULT), 0);
     const hsize_t dims[2] = {model.adjacency.size(), 2};
     const hid_t space = H5Screate_simple(2, dims, nullptr);
@@ -220,11 +226,7 @@ TEST_F(CheckpointTest, AFormat6CheckpointHasNoLoosePoints) {
   {
     const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
     ASSERT_GE(f, 0);
-    const hid_t attr = H5Aopen(f, "kessler_checkpoint_format", H5P_DEFAULT);
-    const std::int64_t six = 6;
-    ASSERT_GE(H5Awrite(attr, H5T_NATIVE_INT64, &six), 0);
-    H5Aclose(attr);
-    ASSERT_GE(H5Ldelete(f, "/points/loose", H5P_DEFAULT), 0);
+    asFormatBefore7(f, 6);
     H5Fclose(f);
   }
   const Restored read = readCheckpoint(file, {material_}, otmFor);
