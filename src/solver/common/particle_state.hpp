@@ -23,4 +23,8 @@ struct ParticleState {
   std::vector<double> adjacency_length0;  // initial distance of each pair, same order
 };
 
+// The points numbered 0, 1, ... in store order, once, when a model is built (after a sort for
+// locality, search/morton.hpp); the adjacency (by point id) follows.
+void numberPointsInOrder(ParticleState& state);
+
 }  // namespace kessler

@@ -106,7 +106,7 @@ double Integrator::smoothingLength(LocalIndex p) const {
 
 double Integrator::meanNeighbours() const {
   const LocalIndex n = model_.points.owned;
-  return n > 0 ? static_cast<double>(pairs_.size()) / n : 0.0;
+  return n > 0 ? static_cast<double>(pairs_.neighbourCount()) / n : 0.0;
 }
 
 // The pairs at the current positions; which take part in the deformation and the stress (those
@@ -126,10 +126,9 @@ void Integrator::search() {
   pairs_.build(points.x, h_, points.owned, settings_.symmetry_axes);
   correction_.resize(n);
   struck_.assign(n, -1);
-  LocalIndex uncorrected = 0;
-#pragma omp parallel for schedule(static) reduction(+ : uncorrected)
-  for (LocalIndex i = 0; i < points.owned; ++i) {
-    Mat3 moment = Mat3::Zero();
+  // Which pairs are active: once per pair (the test is symmetric in its ends).
+#pragma omp parallel for schedule(static)
+  for (LocalIndex i = 0; i < points.owned; ++i)
     for (Index e = pairs_.offset[i]; e < pairs_.offset[i + 1]; ++e) {
       const LocalIndex j = pairs_.other[e];
       const std::uint8_t m = pairs_.mirror[e];
@@ -138,10 +137,17 @@ void Integrator::search() {
       const bool approaching = (points.v[i] - reflect(points.v[j], m)).dot(d) < 0.0;
       const bool pressed = points.stress[i].trace() < 0.0 && points.stress[j].trace() < 0.0;
       pairs_.active[e] = within || approaching || pressed;
-      if (!pairs_.active[e]) continue;
-      moment.noalias() -= points.volume[j] * d * pairs_.gradient[e].transpose();
-      if (points.debris(i) && !points.debris(j) && points.body[j] != points.body[i]) struck_[i] = points.body[j];
     }
+  LocalIndex uncorrected = 0;
+#pragma omp parallel for schedule(static) reduction(+ : uncorrected)
+  for (LocalIndex i = 0; i < points.owned; ++i) {
+    Mat3 moment = Mat3::Zero();
+    pairs_.forEachOf(i, [&](LocalIndex j, std::uint8_t m, const Vec3& grad, bool active) {
+      if (!active) return;
+      const Vec3 d = points.x[i] - reflect(points.x[j], m);
+      moment.noalias() -= points.volume[j] * d * grad.transpose();
+      if (points.debris(i) && !points.debris(j) && points.body[j] != points.body[i]) struck_[i] = points.body[j];
+    });
     // The correction where the moment is well conditioned: its smallest singular value at least a
     // tenth of an interior particle's (1), as at a surface, an edge or a corner of a body.
     if (!points.debris(i) && moment.allFinite() && smallestRootEigenvalue(moment.transpose() * moment) > 0.1) {
@@ -186,15 +192,18 @@ void Integrator::forces() {
       }
     }
   }
+  // Each pair's force on its listing particle i, once: that on its other end j is -R times it (the
+  // image of the reaction). The viscosity's heating and signal speed are the same at both ends.
+  const auto pairs = static_cast<std::size_t>(pairs_.size());
+  pair_share_.resize(pairs);
 #pragma omp parallel for schedule(dynamic, 256)
   for (LocalIndex i = 0; i < points.owned; ++i) {
-    Vec3 f = Vec3::Zero();
-    double power = 0.0, signal = 0.0;
     const double rho_i = points.density(i), c_i = points.debris(i) ? 0.0 : points.sound_speed[i];
     for (Index e = pairs_.offset[i]; e < pairs_.offset[i + 1]; ++e) {
       const LocalIndex j = pairs_.other[e];
       const std::uint8_t m = pairs_.mirror[e];
       const Vec3& grad = pairs_.gradient[e];
+      Vec3 f = Vec3::Zero();
       if (pairs_.active[e]) {
         const Mat3 sum = stress_b[i] + reflect(stress_b[j], m);
         f.noalias() += points.volume[i] * points.volume[j] * (sum * grad);
@@ -207,20 +216,42 @@ void Integrator::forces() {
           f.noalias() += points.mass[i] * points.mass[j] * fn * ((artificial[i] + reflect(artificial[j], m)) * grad);
         }
       }
+      PairShare& share = pair_share_[e];
+      share.power = share.signal = 0.0;
       const Vec3 d = points.x[i] - reflect(points.x[j], m);
       const Vec3 v = points.v[i] - reflect(points.v[j], m);
       const double approach = v.dot(d);
-      if (approach >= 0.0) continue;
-      const double h_ij = 0.5 * (h_[i] + h_[j]);
-      const double mu = h_ij * approach / (d.squaredNorm() + 0.01 * h_ij * h_ij);
-      const double c_j = points.debris(j) ? 0.0 : points.sound_speed[j];
-      const double rho = 0.5 * (rho_i + points.density(j));
-      const double alpha = 0.5 * (model_.viscosity[i] + model_.viscosity[j]);
-      const double viscosity = alpha * (-0.5 * (c_i + c_j) * mu + o.viscosity_ratio * mu * mu) / rho;
-      const double mm = points.mass[i] * points.mass[j];
-      f.noalias() -= mm * viscosity * grad;
-      power += 0.5 * mm * viscosity * v.dot(grad);
-      signal = std::max(signal, -mu);
+      if (approach < 0.0) {
+        const double h_ij = 0.5 * (h_[i] + h_[j]);
+        const double mu = h_ij * approach / (d.squaredNorm() + 0.01 * h_ij * h_ij);
+        const double c_j = points.debris(j) ? 0.0 : points.sound_speed[j];
+        const double rho = 0.5 * (rho_i + points.density(j));
+        const double alpha = 0.5 * (model_.viscosity[i] + model_.viscosity[j]);
+        const double viscosity = alpha * (-0.5 * (c_i + c_j) * mu + o.viscosity_ratio * mu * mu) / rho;
+        const double mm = points.mass[i] * points.mass[j];
+        f.noalias() -= mm * viscosity * grad;
+        share.power = 0.5 * mm * viscosity * v.dot(grad);
+        share.signal = -mu;
+      }
+      share.force = f;
+    }
+  }
+  // Each particle's sum over its pairs, from both ends, in a fixed order.
+#pragma omp parallel for schedule(static)
+  for (LocalIndex i = 0; i < points.owned; ++i) {
+    Vec3 f = Vec3::Zero();
+    double power = 0.0, signal = 0.0;
+    for (Index e = pairs_.offset[i]; e < pairs_.offset[i + 1]; ++e) {
+      const PairShare& share = pair_share_[e];
+      f += share.force;
+      power += share.power;
+      signal = std::max(signal, share.signal);
+    }
+    for (Index k = pairs_.listed_offset[i]; k < pairs_.listed_offset[i + 1]; ++k) {
+      const PairShare& share = pair_share_[pairs_.listed_by[k]];
+      f -= reflect(share.force, pairs_.listed_mirror[k]);
+      power += share.power;
+      signal = std::max(signal, share.signal);
     }
     acceleration_[i] = f / points.mass[i];
     viscous_power_[i] = power;
@@ -239,12 +270,9 @@ void Integrator::deform(double dt) {
     points.dF[i].setIdentity();
     if (points.debris(i)) continue;
     Mat3 gradient = Mat3::Zero();
-    for (Index e = pairs_.offset[i]; e < pairs_.offset[i + 1]; ++e) {
-      if (!pairs_.active[e]) continue;
-      const LocalIndex j = pairs_.other[e];
-      gradient.noalias() +=
-          points.volume[j] * (reflect(points.v[j], pairs_.mirror[e]) - points.v[i]) * pairs_.gradient[e].transpose();
-    }
+    pairs_.forEachOf(i, [&](LocalIndex j, std::uint8_t m, const Vec3& grad, bool active) {
+      if (active) gradient.noalias() += points.volume[j] * (reflect(points.v[j], m) - points.v[i]) * grad.transpose();
+    });
     const Mat3 L = gradient * correction_[i];
     switchViscosity(i, L.trace(), dt);
     const Mat3 half = 0.5 * dt * L;

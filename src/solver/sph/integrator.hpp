@@ -87,6 +87,13 @@ class Integrator {
   std::vector<double> signal_;         // the largest viscous signal speed mu of each particle, m/s
   std::vector<double> volume_rate_;    // ln J / dt of the last step
   std::vector<double> heat_;
+  // Per pair (forces()): its force on its listing particle, the viscosity's heating of each end and
+  // its viscous signal speed.
+  struct PairShare {
+    Vec3 force;
+    double power, signal;
+  };
+  std::vector<PairShare> pair_share_;
   std::vector<int> struck_;  // the body each debris particle met at the last search, -1 none
   LocalIndex uncorrected_ = 0;
 };

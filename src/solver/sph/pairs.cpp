@@ -13,8 +13,13 @@ void Pairs::build(std::span<const Vec3> x, std::span<const double> h, LocalIndex
   const auto n = static_cast<std::size_t>(count);
   double h_max = 0.0;
   for (std::size_t i = 0; i < n; ++i) h_max = std::max(h_max, h[i]);
+  if (n == 0) {
+    *this = Pairs{};
+    offset.assign(1, 0);
+    listed_offset.assign(1, 0);
+    return;
+  }
   offset.assign(n + 1, 0);
-  if (n == 0) return;
   cells_.build(x, count, 2.0 * h_max);
   // The image sets a particle near the planes sees: each non-empty subset of the axes whose planes
   // lie within its reach.
@@ -29,7 +34,8 @@ void Pairs::build(std::span<const Vec3> x, std::span<const double> h, LocalIndex
         if ((m & (1u << a)) && x[i][a] >= reach) near = false;
       if (!near) continue;
       cells_.forEachWithin(reflect(x[i], m), reach, [&](LocalIndex j, double d2) {
-        if (m == 0 && static_cast<std::size_t>(j) == i) return;
+        // Each pair once, by its lower particle (a particle's own image once).
+        if (static_cast<std::size_t>(j) < i || (m == 0 && static_cast<std::size_t>(j) == i)) return;
         const double support = h[i] + h[static_cast<std::size_t>(j)];
         if (d2 < support * support) f(j, m);
       });
@@ -60,13 +66,13 @@ void Pairs::build(std::span<const Vec3> x, std::span<const double> h, LocalIndex
   gradient.resize(total);
   kernel.resize(total);
   // Thread t's block begins at the pairs of all blocks before it (as listed under schedule(static)).
-  std::vector<std::size_t> first(found_.size() + 1, 0);
-  for (std::size_t t = 0; t < found_.size(); ++t) first[t + 1] = first[t] + found_[t].size();
+  std::vector<std::size_t> start(found_.size() + 1, 0);
+  for (std::size_t t = 0; t < found_.size(); ++t) start[t + 1] = start[t] + found_[t].size();
 #pragma omp parallel for schedule(static, 1)
   for (std::size_t t = 0; t < found_.size(); ++t)
     for (std::size_t k = 0; k < found_[t].size(); ++k) {
-      other[first[t] + k] = found_[t][k].j;
-      mirror[first[t] + k] = found_[t][k].mirror;
+      other[start[t] + k] = found_[t][k].j;
+      mirror[start[t] + k] = found_[t][k].mirror;
     }
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i)
@@ -76,6 +82,30 @@ void Pairs::build(std::span<const Vec3> x, std::span<const double> h, LocalIndex
       const double r = d.norm(), h_ij = 0.5 * (h[i] + h[j]);
       kernel[e] = CubicSpline::value(r, h_ij);
       gradient[e] = r > 0.0 ? Vec3(CubicSpline::slope(r, h_ij) / r * d) : Vec3::Zero();
+    }
+  // The other ends' lists: each particle's pairs listed by lower particles, in their order.
+  listed_offset.assign(n + 1, 0);
+  self_images_ = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    for (auto e = static_cast<std::size_t>(offset[i]); e < static_cast<std::size_t>(offset[i + 1]); ++e)
+      if (static_cast<std::size_t>(other[e]) == i)
+        ++self_images_;
+      else
+        ++listed_offset[static_cast<std::size_t>(other[e]) + 1];
+  for (std::size_t i = 0; i < n; ++i) listed_offset[i + 1] += listed_offset[i];
+  const auto listed = static_cast<std::size_t>(listed_offset[n]);
+  listed_by.resize(listed);
+  listed_other.resize(listed);
+  listed_mirror.resize(listed);
+  count_.assign(listed_offset.begin(), listed_offset.end() - 1);  // each particle's next slot
+  for (std::size_t i = 0; i < n; ++i)
+    for (auto e = static_cast<std::size_t>(offset[i]); e < static_cast<std::size_t>(offset[i + 1]); ++e) {
+      const auto j = static_cast<std::size_t>(other[e]);
+      if (j == i) continue;
+      const auto k = static_cast<std::size_t>(count_[j]++);
+      listed_by[k] = static_cast<Index>(e);
+      listed_other[k] = static_cast<LocalIndex>(i);
+      listed_mirror[k] = mirror[e];
     }
 }
 

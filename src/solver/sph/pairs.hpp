@@ -1,9 +1,15 @@
 #pragma once
-// SPH's neighbour pairs (docs/theory.md §10): for each particle i, the particles j within the
-// support h_i + h_j (the mean smoothing length's 2h), and the images of particles across the
-// problem's symmetry planes (a mirrored copy of the model that the run leaves out). Built anew at
-// every step's positions from a cell list; the order of each particle's pairs is the cell list's,
-// the same for any thread count.
+// SPH's neighbour pairs (docs/theory.md §10): the particles i, j within the support h_i + h_j (the
+// mean smoothing length's 2h), and the images of particles across the problem's symmetry planes (a
+// mirrored copy of the model that the run leaves out). Built anew at every step's positions from a
+// cell list.
+//
+// Each pair is listed once, by its lower particle i (j > i, or j >= i for an image: a particle near
+// a plane meets its own image), with i's view of it: the kernel and its gradient at
+// d = x_i - R x_j (R the reflection across the pair's planes). j sees the same pair as the image of
+// i, at d_j = -R d, with the gradient -R grad_i W: what is computed once per pair reaches both ends,
+// j's share reflected. Each particle gathers its pairs' shares in a fixed order (those it lists,
+// then those that list it, in the order of their listing particle), the same for any thread count.
 #include "search/cell_list.hpp"
 #include "solver/sph/model.hpp"
 
@@ -30,18 +36,39 @@ inline Mat3 reflect(Mat3 t, std::uint8_t mirror) {
 }
 
 struct Pairs {
-  std::vector<Index> offset;         // particle i's pairs are [offset[i], offset[i + 1])
+  std::vector<Index> offset;         // the pairs particle i lists are [offset[i], offset[i + 1])
   std::vector<LocalIndex> other;     // j
   std::vector<std::uint8_t> mirror;  // the image of j across these planes (0: j itself)
   std::vector<std::uint8_t> active;  // takes part in the deformation and the stress (Integrator)
   std::vector<Vec3> gradient;        // grad_i W(x_i - x_j', h_ij), h_ij = (h_i + h_j) / 2
   std::vector<double> kernel;        // W(|x_i - x_j'|, h_ij)
+  // The pairs that list particle j as their other end (not its own image's), in the order of their
+  // listing particle: listed_by[listed_offset[j] .. listed_offset[j + 1]), with that particle and the
+  // image beside them.
+  std::vector<Index> listed_offset;
+  std::vector<Index> listed_by;
+  std::vector<LocalIndex> listed_other;
+  std::vector<std::uint8_t> listed_mirror;
 
   // The pairs of the first `count` positions with smoothing lengths h, and their images across the
   // planes normal to `symmetry_axes` (particles at x[a] >= 0).
   void build(std::span<const Vec3> x, std::span<const double> h, LocalIndex count,
              const std::vector<int>& symmetry_axes);
   Index size() const { return static_cast<Index>(other.size()); }
+  // Each particle's pairs counted from both ends (a particle's pair with its own image once).
+  Index neighbourCount() const { return 2 * size() - self_images_; }
+
+  // f(j, mirror, g, active) for each pair of particle i: the other particle j (whose image across
+  // `mirror` i meets), i's kernel gradient g and whether the pair is active; those i lists, then
+  // those that list i.
+  template <class F>
+  void forEachOf(LocalIndex i, F&& f) const {
+    for (Index e = offset[i]; e < offset[i + 1]; ++e) f(other[e], mirror[e], gradient[e], active[e] != 0);
+    for (Index k = listed_offset[i]; k < listed_offset[i + 1]; ++k) {
+      const Index e = listed_by[k];
+      f(listed_other[k], listed_mirror[k], Vec3(-reflect(gradient[e], listed_mirror[k])), active[e] != 0);
+    }
+  }
 
  private:
   struct Found {
@@ -51,6 +78,7 @@ struct Pairs {
   CellList cells_;
   std::vector<Index> count_;
   std::vector<std::vector<Found>> found_;  // each thread's pairs, in particle order
+  Index self_images_ = 0;
 };
 
 }  // namespace kessler::sph

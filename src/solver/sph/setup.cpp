@@ -3,6 +3,7 @@
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "geometry/lattice.hpp"
+#include "search/morton.hpp"
 
 #include <fmt/format.h>
 
@@ -61,6 +62,29 @@ BodyParticles particlesOf(const BodySetup& setup, const std::vector<int>& symmet
 void prescribe(Model& model, LocalIndex p, int axis, double velocity) {
   model.constrained[p] |= static_cast<std::uint8_t>(1u << axis);
   model.prescribed_v[p][axis] = velocity;
+}
+
+// Each body's particles along a Morton curve (search/morton.hpp), so that a particle's neighbours
+// lie close to it in memory, and numbered in that order.
+void sortForLocality(Model& model) {
+  PointStore& points = model.points;
+  if (points.size() == 0) return;
+  Vec3 lo = points.x[0], hi = points.x[0];
+  for (const Vec3& x : points.x) {
+    lo = lo.cwiseMin(x);
+    hi = hi.cwiseMax(x);
+  }
+  const std::vector<LocalIndex> order = mortonOrder(points.x, points.body, model.bodies.size(), lo, hi);
+  points.permute(order);
+  auto permute = [&](auto& values) {
+    const auto old = values;
+    for (std::size_t k = 0; k < order.size(); ++k) values[k] = old[static_cast<std::size_t>(order[k])];
+  };
+  permute(model.element);
+  permute(model.constrained);
+  permute(model.prescribed_v);
+  permute(model.viscosity);
+  numberPointsInOrder(model);
 }
 
 }  // namespace
@@ -126,6 +150,7 @@ Model buildModel(const Problem& problem) {
     log::info("  body {:<14} {:>9} particles", setup.name, particles.points.size());
   }
   points.owned = points.size();
+  sortForLocality(model);
   for (const PlaneConstraint& plane : problem.planes)
     for (const LocalIndex p : particlesOnPlane(model, plane)) prescribe(model, p, plane.axis, plane.velocity);
   if (problem.prepare) problem.prepare(model);
