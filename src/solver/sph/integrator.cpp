@@ -174,21 +174,28 @@ void Integrator::forces() {
   acceleration_.resize(n);
   viscous_power_.resize(n);
   signal_.resize(n);
-  // Per particle: sigma B^T, and the artificial stress R (tensile principal stresses only).
+  // Per particle: sigma B^T, the artificial stress R (tensile principal stresses only; `tensile`
+  // where it is not zero), the density and the sound speed the viscosity uses (none for debris).
   std::vector<Mat3> stress_b(n), artificial(n);
+  std::vector<double> density(n), sound(n);
+  std::vector<std::uint8_t> tensile(n);
 #pragma omp parallel for schedule(static)
   for (LocalIndex p = 0; p < points.owned; ++p) {
     stress_b[p] = points.stress[p] * correction_[p].transpose();
+    density[p] = points.density(p);
+    sound[p] = points.debris(p) ? 0.0 : points.sound_speed[p];
     artificial[p].setZero();
+    tensile[p] = 0;
     if (points.broken[p] || o.artificial_stress <= 0.0) continue;
     Eigen::SelfAdjointEigenSolver<Mat3> principal;
     principal.computeDirect(points.stress[p]);
-    const double rho2 = points.density(p) * points.density(p);
+    const double rho2 = density[p] * density[p];
     for (int a = 0; a < 3; ++a) {
       const double s = principal.eigenvalues()[a];
       if (s > 0.0) {
         const Vec3 e = principal.eigenvectors().col(a);
         artificial[p].noalias() -= o.artificial_stress * s / rho2 * e * e.transpose();
+        tensile[p] = 1;
       }
     }
   }
@@ -198,7 +205,6 @@ void Integrator::forces() {
   pair_share_.resize(pairs);
 #pragma omp parallel for schedule(dynamic, 256)
   for (LocalIndex i = 0; i < points.owned; ++i) {
-    const double rho_i = points.density(i), c_i = points.debris(i) ? 0.0 : points.sound_speed[i];
     for (Index e = pairs_.offset[i]; e < pairs_.offset[i + 1]; ++e) {
       const LocalIndex j = pairs_.other[e];
       const std::uint8_t m = pairs_.mirror[e];
@@ -207,7 +213,7 @@ void Integrator::forces() {
       if (pairs_.active[e]) {
         const Mat3 sum = stress_b[i] + reflect(stress_b[j], m);
         f.noalias() += points.volume[i] * points.volume[j] * (sum * grad);
-        if (o.artificial_stress > 0.0 && points.body[i] == points.body[j] && !points.broken[i] && !points.broken[j]) {
+        if ((tensile[i] || tensile[j]) && points.body[i] == points.body[j] && !points.broken[i] && !points.broken[j]) {
           const double h_ij = 0.5 * (h_[i] + h_[j]);
           const double reference = CubicSpline::value(0.5 * (spacing_[i] + spacing_[j]), h_ij);
           const double ratio = reference > 0.0 ? std::min(pairs_.kernel[e] / reference, 1.0) : 0.0;
@@ -224,10 +230,9 @@ void Integrator::forces() {
       if (approach < 0.0) {
         const double h_ij = 0.5 * (h_[i] + h_[j]);
         const double mu = h_ij * approach / (d.squaredNorm() + 0.01 * h_ij * h_ij);
-        const double c_j = points.debris(j) ? 0.0 : points.sound_speed[j];
-        const double rho = 0.5 * (rho_i + points.density(j));
+        const double rho = 0.5 * (density[i] + density[j]);
         const double alpha = 0.5 * (model_.viscosity[i] + model_.viscosity[j]);
-        const double viscosity = alpha * (-0.5 * (c_i + c_j) * mu + o.viscosity_ratio * mu * mu) / rho;
+        const double viscosity = alpha * (-0.5 * (sound[i] + sound[j]) * mu + o.viscosity_ratio * mu * mu) / rho;
         const double mm = points.mass[i] * points.mass[j];
         f.noalias() -= mm * viscosity * grad;
         share.power = 0.5 * mm * viscosity * v.dot(grad);

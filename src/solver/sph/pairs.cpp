@@ -1,5 +1,6 @@
 #include "solver/sph/pairs.hpp"
 
+#include "core/transpose.hpp"
 #include "solver/sph/kernel.hpp"
 
 #include <algorithm>
@@ -83,30 +84,22 @@ void Pairs::build(std::span<const Vec3> x, std::span<const double> h, LocalIndex
       kernel[e] = CubicSpline::value(r, h_ij);
       gradient[e] = r > 0.0 ? Vec3(CubicSpline::slope(r, h_ij) / r * d) : Vec3::Zero();
     }
-  // The other ends' lists: each particle's pairs listed by lower particles, in their order.
-  listed_offset.assign(n + 1, 0);
-  self_images_ = 0;
-  for (std::size_t i = 0; i < n; ++i)
-    for (auto e = static_cast<std::size_t>(offset[i]); e < static_cast<std::size_t>(offset[i + 1]); ++e)
-      if (static_cast<std::size_t>(other[e]) == i)
-        ++self_images_;
-      else
-        ++listed_offset[static_cast<std::size_t>(other[e]) + 1];
-  for (std::size_t i = 0; i < n; ++i) listed_offset[i + 1] += listed_offset[i];
-  const auto listed = static_cast<std::size_t>(listed_offset[n]);
-  listed_by.resize(listed);
-  listed_other.resize(listed);
-  listed_mirror.resize(listed);
-  count_.assign(listed_offset.begin(), listed_offset.end() - 1);  // each particle's next slot
-  for (std::size_t i = 0; i < n; ++i)
-    for (auto e = static_cast<std::size_t>(offset[i]); e < static_cast<std::size_t>(offset[i + 1]); ++e) {
-      const auto j = static_cast<std::size_t>(other[e]);
-      if (j == i) continue;
-      const auto k = static_cast<std::size_t>(count_[j]++);
-      listed_by[k] = static_cast<Index>(e);
-      listed_other[k] = static_cast<LocalIndex>(i);
-      listed_mirror[k] = mirror[e];
-    }
+  // The other ends' lists: each particle's pairs listed by lower particles, in their order (a
+  // particle's pair with its own image is its own alone).
+  transposeRows(
+      offset, count, listed_offset, scratch_,
+      [&](Index e, LocalIndex i) { return other[e] == i ? LocalIndex{-1} : other[e]; },
+      [&](std::size_t listed) {
+        listed_by.resize(listed);
+        listed_other.resize(listed);
+        listed_mirror.resize(listed);
+      },
+      [&](std::size_t k, Index e, LocalIndex i) {
+        listed_by[k] = e;
+        listed_other[k] = i;
+        listed_mirror[k] = mirror[e];
+      });
+  self_images_ = offset[n] - listed_offset[n];
 }
 
 }  // namespace kessler::sph

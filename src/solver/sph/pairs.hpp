@@ -77,6 +77,7 @@ struct Pairs {
   };
   CellList cells_;
   std::vector<Index> count_;
+  std::vector<std::uint32_t> scratch_;     // the transpose's counters
   std::vector<std::vector<Found>> found_;  // each thread's pairs, in particle order
   Index self_images_ = 0;
 };
