@@ -29,4 +29,36 @@ struct Model : ParticleState {
   std::vector<std::array<int, 3>> element;
 };
 
+// The particles as one store (particles/store_fields.hpp): the point store and the arrays SPH keeps
+// beside it per particle, so that a reordering, a migration or a halo moves them together.
+struct Particles {
+  PointStore& points;
+  std::vector<std::uint8_t>& constrained;
+  std::vector<Vec3>& prescribed_v;
+  std::vector<double>& viscosity;
+  std::vector<std::array<int, 3>>& element;
+  std::vector<Vec3>& x;
+  std::vector<Index>& id;
+  LocalIndex& owned;
+
+  explicit Particles(Model& model)
+      : points(model.points),
+        constrained(model.constrained),
+        prescribed_v(model.prescribed_v),
+        viscosity(model.viscosity),
+        element(model.element),
+        x(model.points.x),
+        id(model.points.id),
+        owned(model.points.owned) {}
+
+  template <class Store, class Visit>
+  static void fields(Store& s, Visit&& visit) {
+    PointStore::fields(s.points, visit);
+    visit("constrained", s.constrained, std::uint8_t{0});
+    visit("prescribed_v", s.prescribed_v, Vec3::Zero().eval());
+    visit("viscosity", s.viscosity, 0.0);
+    visit("element", s.element, std::array<int, 3>{-1, -1, -1});
+  }
+};
+
 }  // namespace kessler::sph

@@ -3,6 +3,7 @@
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "geometry/lattice.hpp"
+#include "particles/store_fields.hpp"
 #include "search/morton.hpp"
 
 #include <fmt/format.h>
@@ -74,16 +75,8 @@ void sortForLocality(Model& model) {
     lo = lo.cwiseMin(x);
     hi = hi.cwiseMax(x);
   }
-  const std::vector<LocalIndex> order = mortonOrder(points.x, points.body, model.bodies.size(), lo, hi);
-  points.permute(order);
-  auto permute = [&](auto& values) {
-    const auto old = values;
-    for (std::size_t k = 0; k < order.size(); ++k) values[k] = old[static_cast<std::size_t>(order[k])];
-  };
-  permute(model.element);
-  permute(model.constrained);
-  permute(model.prescribed_v);
-  permute(model.viscosity);
+  Particles particles(model);
+  permuteFields(particles, mortonOrder(points.x, points.body, model.bodies.size(), lo, hi));
   numberPointsInOrder(model);
 }
 

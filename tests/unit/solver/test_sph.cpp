@@ -1,17 +1,21 @@
-// SPH (solver/sph/, docs/theory.md §9): its kernel, the corrected gradient's patch test, linear
+// SPH (solver/sph/, docs/theory.md §10): its kernel, its pairs, the corrected gradient's patch test, linear
 // momentum through a collision, and a longitudinal wave's speed.
 #include "../blocks.hpp"
 #include "core/error.hpp"
 #include "solver/methods.hpp"
 #include "solver/sph/kernel.hpp"
+#include "solver/sph/pairs.hpp"
 #include "solver/sph/reconstruction.hpp"
 #include "solver/sph/setup.hpp"
 #include "solver/sph/sph_method.hpp"
 
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <cmath>
+#include <map>
 #include <random>
+#include <utility>
 
 namespace kessler::sph {
 namespace {
@@ -46,6 +50,52 @@ geometry::Discretisation jitteredBlock() {
         d.spacings.push_back(1e-3);
       }
   return d;
+}
+
+// Each pair is listed once and seen from both ends: every particle's pairs (those it lists and
+// those that list it) are those a search of all pairs finds, the images across two symmetry planes
+// included, each with the kernel gradient at its own end, for any number of threads.
+TEST(SphPairs, EachParticleSeesItsPairsFromBothEnds) {
+  const geometry::Discretisation block = jitteredBlock();
+  const std::vector<Vec3>& x = block.points;
+  std::vector<double> h(x.size());
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> scale(1.0, 1.5);
+  for (double& hi : h) hi = 1.2e-3 * scale(random);
+  const auto n = static_cast<LocalIndex>(x.size());
+  const std::vector<int> axes{0, 2};
+  // What a search of every pair finds, per particle: (j, mirror) -> i's gradient.
+  std::vector<std::map<std::pair<LocalIndex, int>, Vec3>> expected(x.size());
+  for (LocalIndex i = 0; i < n; ++i)
+    for (LocalIndex j = 0; j < n; ++j)
+      for (const int m : {0, 1, 4, 5}) {
+        if (i == j && m == 0) continue;
+        const Vec3 d = x[i] - reflect(x[j], static_cast<std::uint8_t>(m));
+        const double r = d.norm(), h_ij = 0.5 * (h[i] + h[j]);
+        if (r < h[i] + h[j]) expected[i][{j, m}] = CubicSpline::slope(r, h_ij) / r * d;
+      }
+  const int before = omp_get_max_threads();
+  for (const int threads : {1, 2, 3}) {
+    omp_set_num_threads(threads);
+    Pairs pairs;
+    pairs.build(x, h, n, axes);
+    Index seen = 0;
+    for (LocalIndex i = 0; i < n; ++i) {
+      std::map<std::pair<LocalIndex, int>, Vec3> found;
+      pairs.forEachOf(i, [&](LocalIndex j, std::uint8_t m, const Vec3& g, bool) {
+        EXPECT_TRUE(found.emplace(std::pair<LocalIndex, int>{j, m}, g).second) << "pair seen twice";
+      });
+      ASSERT_EQ(found.size(), expected[i].size()) << "particle " << i << ", " << threads << " threads";
+      for (const auto& [key, g] : expected[i]) {
+        ASSERT_TRUE(found.count(key)) << "particle " << i << " misses " << key.first << " (mirror " << key.second
+                                      << ")";
+        EXPECT_LE((found[key] - g).norm(), 1e-12 * g.norm()) << "particle " << i;
+      }
+      seen += static_cast<Index>(found.size());
+    }
+    EXPECT_EQ(pairs.neighbourCount(), seen);
+  }
+  omp_set_num_threads(before);
 }
 
 Problem quiet(double end_time) {
