@@ -14,6 +14,15 @@
 
 namespace kessler::sph {
 
+namespace {
+
+// Particles of different bodies (or debris) start to interact when the gap between their elements
+// (each reaching half a spacing from its particle) closes to half a spacing, as OTM's seizing
+// contact at its default contact_distance (docs/theory.md §10).
+constexpr double contact_gap = 0.5;
+
+}  // namespace
+
 Integrator::Integrator(Model& model, const Settings& settings)
     : model_(model),
       settings_(settings),
@@ -109,10 +118,12 @@ double Integrator::meanNeighbours() const {
   return n > 0 ? static_cast<double>(pairs_.neighbourCount()) / n : 0.0;
 }
 
-// The pairs at the current positions; which take part in the deformation and the stress (those
-// within a body always; across bodies, or with debris, while the two approach or are both under
-// pressure: bodies in contact push and shear each other as one body, and part freely once their
-// pressure is released, never pulled together); the kernel correction B_i over the active pairs.
+// The pairs at the current positions; which take part in the deformation, the stress and the
+// viscosity (those within a body always; across bodies, or with debris, while the two approach
+// within `contact_gap` spacings of touching, or are both under pressure: bodies in contact push and
+// shear each other as one body, and part freely once their pressure is released, never pulled
+// together, and no body feels another across a gap); the kernel correction B_i over the active
+// pairs.
 void Integrator::search() {
   ScopedPhase phase(timers_, "search");
   PointStore& points = model_.points;
@@ -135,8 +146,9 @@ void Integrator::search() {
       const Vec3 d = points.x[i] - reflect(points.x[j], m);
       const bool within = points.body[i] == points.body[j] && !points.debris(i) && !points.debris(j);
       const bool approaching = (points.v[i] - reflect(points.v[j], m)).dot(d) < 0.0;
+      const double touching = (1.0 + contact_gap) * 0.5 * (spacing_[i] + spacing_[j]);
       const bool pressed = points.stress[i].trace() < 0.0 && points.stress[j].trace() < 0.0;
-      pairs_.active[e] = within || approaching || pressed;
+      pairs_.active[e] = within || (approaching && d.squaredNorm() < touching * touching) || pressed;
     }
   LocalIndex uncorrected = 0;
 #pragma omp parallel for schedule(static) reduction(+ : uncorrected)
@@ -227,7 +239,7 @@ void Integrator::forces() {
       const Vec3 d = points.x[i] - reflect(points.x[j], m);
       const Vec3 v = points.v[i] - reflect(points.v[j], m);
       const double approach = v.dot(d);
-      if (approach < 0.0) {
+      if (approach < 0.0 && pairs_.active[e]) {
         const double h_ij = 0.5 * (h_[i] + h_[j]);
         const double mu = h_ij * approach / (d.squaredNorm() + 0.01 * h_ij * h_ij);
         const double rho = 0.5 * (density[i] + density[j]);
