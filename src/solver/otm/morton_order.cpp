@@ -1,5 +1,7 @@
 #include "solver/otm/morton_order.hpp"
 
+#include "search/cell_list.hpp"
+
 #include <numeric>
 
 namespace kessler::otm {
@@ -8,11 +10,8 @@ void sortForLocality(Model& model) {
   PointStore& points = model.points;
   NodeStore& nodes = model.nodes;
   if (points.size() == 0 || nodes.size() == 0) return;
-  Vec3 lo = nodes.x[0], hi = nodes.x[0];
-  for (const Vec3& x : nodes.x) {
-    lo = lo.cwiseMin(x);
-    hi = hi.cwiseMax(x);
-  }
+  const CellList::Bounds box = CellList::boundsOf(nodes.x, nodes.size());
+  const Vec3 &lo = box.lo, &hi = box.hi;
   points.permute(mortonOrder(points.x, points.body, model.bodies.size(), lo, hi));
   model.lme_lambda.assign(points.x.size(), Vec3::Zero());  // before the first solve: no warm start yet
   nodes.permute(mortonOrder(nodes.x, nodes.body, model.bodies.size(), lo, hi));

@@ -4,6 +4,7 @@
 #include "core/log.hpp"
 #include "geometry/lattice.hpp"
 #include "particles/store_fields.hpp"
+#include "search/cell_list.hpp"
 #include "search/morton.hpp"
 
 #include <fmt/format.h>
@@ -70,13 +71,9 @@ void prescribe(Model& model, LocalIndex p, int axis, double velocity) {
 void sortForLocality(Model& model) {
   PointStore& points = model.points;
   if (points.size() == 0) return;
-  Vec3 lo = points.x[0], hi = points.x[0];
-  for (const Vec3& x : points.x) {
-    lo = lo.cwiseMin(x);
-    hi = hi.cwiseMax(x);
-  }
+  const CellList::Bounds box = CellList::boundsOf(points.x, points.size());
   Particles particles(model);
-  permuteFields(particles, mortonOrder(points.x, points.body, model.bodies.size(), lo, hi));
+  permuteFields(particles, mortonOrder(points.x, points.body, model.bodies.size(), box.lo, box.hi));
   numberPointsInOrder(model);
 }
 
