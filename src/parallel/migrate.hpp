@@ -128,6 +128,26 @@ std::vector<MergeSource> mergeById(Store& store, std::span<const LocalIndex> kep
   return from;
 }
 
+// Every rank's entries `own` (in id order) on rank 0, merged by id into `whole` (a store of the same
+// kind); returns, on rank 0, where each of its entries came from (list: the rank, k: the entry's place
+// in that rank's `own`), and nothing elsewhere. Collective.
+template <class Store>
+std::vector<MergeSource> gatherById(const Store& store, std::span<const LocalIndex> own, Store& whole,
+                                    const Communicator& comm) {
+  std::vector<std::byte> bytes;
+  packFields(store, own, bytes);
+  const std::vector<std::vector<std::byte>> in = comm.gather(std::move(bytes));
+  if (!comm.root()) return {};
+  const std::size_t entry_bytes = fieldBytes(whole);
+  std::vector<PackedEntries> lists;
+  for (const std::vector<std::byte>& part : in) {
+    KESSLER_VERIFY(entry_bytes > 0 && part.size() % entry_bytes == 0, "gathering: a message of {} bytes", part.size());
+    lists.push_back({part.data(), part.size() / entry_bytes});
+  }
+  std::vector<std::byte> scratch;
+  return mergeById(whole, {}, lists, scratch);
+}
+
 template <class Store>
 void migrate(Store& store, std::span<const int> destination, const Communicator& comm) {
   KESSLER_VERIFY(destination.size() == static_cast<std::size_t>(store.owned) &&

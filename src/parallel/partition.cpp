@@ -3,7 +3,9 @@
 #include "core/error.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <numeric>
 
 #if KESSLER_HAVE_MPI
 #include <mpi.h>
@@ -41,6 +43,21 @@ double imbalance(const Communicator& comm, double work) {
   return mean > 0.0 ? largest / mean : 1.0;
 }
 
+bool Rebalance::due(const Communicator& comm, double own_work) {
+  imbalance_ = parallel::imbalance(comm, own_work);
+  largest_imbalance_ = std::max(largest_imbalance_, imbalance_);
+  return imbalance_ > std::max(at, 1.05 * cut_balance_);  // the same on every rank
+}
+
+void Rebalance::cut(const Communicator& comm, std::span<const double> work, std::span<const int> owner) {
+  ++count_;
+  std::vector<std::int64_t> given(static_cast<std::size_t>(comm.size()), 0);
+  for (std::size_t k = 0; k < work.size(); ++k)
+    given[static_cast<std::size_t>(owner[k])] += static_cast<std::int64_t>(work[k]);
+  comm.sum(given);
+  cut_balance_ = parallel::imbalance(comm, static_cast<double>(given[static_cast<std::size_t>(comm.rank())]));
+}
+
 #if KESSLER_HAVE_MPI
 
 // Zoltan's state, and the points it asks for through its callbacks while it cuts.
@@ -49,6 +66,9 @@ struct Partition::Zoltan {
   std::span<const Vec3> x;
   std::span<const Index> ids;
   std::span<const double> work;
+  // Zoltan's coordinates are ours times `scale` (RCB cuts first across the longest side of the box,
+  // and a scaled axis becomes the longest: Partition::cut).
+  Vec3 scale = Vec3::Ones();
   ~Zoltan() {
     if (zz) Zoltan_Destroy(&zz);
   }
@@ -95,7 +115,7 @@ static void kesslerPositions(void* data, int, int, int count, ZOLTAN_ID_PTR, ZOL
                              int* error) {
   const auto& z = *static_cast<Partition::Zoltan*>(data);
   for (int i = 0; i < count; ++i)
-    for (int k = 0; k < 3; ++k) x[3 * i + k] = z.x[local[i]][k];
+    for (int k = 0; k < 3; ++k) x[3 * i + k] = z.x[local[i]][k] * z.scale[k];
   *error = ZOLTAN_OK;
 }
 }
@@ -108,6 +128,12 @@ Partition::Partition(const Communicator& comm) : comm_(comm), zoltan_(std::make_
     return true;
   }();
   (void)initialised;
+  create();
+}
+
+// A fresh Zoltan state with Kessler's parameters (no cuts, no directions yet).
+void Partition::create() {
+  if (zoltan_->zz) Zoltan_Destroy(&zoltan_->zz);
   zoltan_->zz = Zoltan_Create(*static_cast<const MPI_Comm*>(comm_.handle()));
   KESSLER_VERIFY(zoltan_->zz, "Zoltan_Create failed");
   Zoltan_Struct* zz = zoltan_->zz;
@@ -141,10 +167,60 @@ Partition::Partition(const Communicator& comm) : comm_(comm), zoltan_(std::make_
 
 Partition::~Partition() = default;
 
+// RCB cuts first across the longest side of the points' box, and later cuts keep the directions of
+// the first (RCB_LOCK_DIRECTIONS, above). That side may run through few layers of points: a lattice
+// plate's layers share their coordinate, a cut can only part them between layers, and cuts through a
+// thin plate or between bodies may leave one rank most of the work (a Whipple shield's rear wall,
+// two layers thick, on 2 ranks: 87% of the particles on one). At the first cut each axis is tried
+// first (scaled to be the longest; Zoltan's own choice first, in a fresh state each), and the one
+// whose cuts leave the least imbalance, by owner() and the points' work, is kept for the run: the
+// same choice on every rank.
 void Partition::cut(std::span<const Vec3> x, std::span<const Index> ids, std::span<const double> work) {
   zoltan_->x = x;
   zoltan_->ids = ids;
   zoltan_->work = work;
+  if (directions_chosen_) {
+    partitionOnce();
+  } else {
+    const Vec3 extent = bounds_.hi - bounds_.lo;
+    std::vector<Vec3> scales{Vec3::Ones()};
+    for (int a = 0; a < 3; ++a)
+      if (extent[a] > 0.0 && extent[a] < extent.maxCoeff()) {
+        Vec3 scale = Vec3::Ones();
+        scale[a] = 1.01 * extent.maxCoeff() / extent[a];
+        scales.push_back(scale);
+      }
+    double best = std::numeric_limits<double>::infinity();
+    std::size_t chosen = 0;
+    for (std::size_t c = 0; c < scales.size(); ++c) {
+      if (c > 0) create();
+      zoltan_->scale = scales[c];
+      partitionOnce();
+      std::vector<std::int64_t> given(static_cast<std::size_t>(comm_.size()), 0);
+      for (std::size_t i = 0; i < x.size(); ++i)
+        given[static_cast<std::size_t>(assign(x[i]))] += static_cast<std::int64_t>(std::ceil(work[i]));
+      comm_.sum(given);
+      const auto largest = static_cast<double>(*std::max_element(given.begin(), given.end()));
+      const auto total = static_cast<double>(std::accumulate(given.begin(), given.end(), std::int64_t{0}));
+      const double imbalance = total > 0.0 ? largest * static_cast<double>(comm_.size()) / total : 1.0;
+      if (imbalance < best * (1.0 - 1e-3)) {  // a clear gain over Zoltan's own choice
+        best = imbalance;
+        chosen = c;
+      }
+    }
+    if (chosen + 1 != scales.size()) {
+      create();
+      zoltan_->scale = scales[chosen];
+      partitionOnce();
+    }
+    directions_chosen_ = true;
+  }
+  zoltan_->x = {};
+  zoltan_->ids = {};
+  zoltan_->work = {};
+}
+
+void Partition::partitionOnce() {
   int changes = 0, gid_words = 0, lid_words = 0, imports = 0, exports = 0;
   ZOLTAN_ID_PTR import_global = nullptr, import_local = nullptr, export_global = nullptr, export_local = nullptr;
   int *import_procs = nullptr, *import_parts = nullptr, *export_procs = nullptr, *export_parts = nullptr;
@@ -154,13 +230,11 @@ void Partition::cut(std::span<const Vec3> x, std::span<const Index> ids, std::sp
         "partition");
   Zoltan_LB_Free_Part(&import_global, &import_local, &import_procs, &import_parts);
   Zoltan_LB_Free_Part(&export_global, &export_local, &export_procs, &export_parts);
-  zoltan_->x = {};
-  zoltan_->ids = {};
-  zoltan_->work = {};
 }
 
 int Partition::assign(const Vec3& x) const {
-  double coords[3] = {x[0], x[1], x[2]};
+  const Vec3& scale = zoltan_->scale;
+  double coords[3] = {x[0] * scale[0], x[1] * scale[1], x[2] * scale[2]};
   int rank = -1;
   check(Zoltan_LB_Point_Assign(zoltan_->zz, coords, &rank), "point assignment");
   return rank;
@@ -169,8 +243,8 @@ int Partition::assign(const Vec3& x) const {
 std::vector<int> Partition::assign(const Vec3& lo, const Vec3& hi) const {
   std::vector<int> ranks(static_cast<std::size_t>(comm_.size()));
   int count = 0;
-  check(Zoltan_LB_Box_Assign(zoltan_->zz, lo[0], lo[1], lo[2], hi[0], hi[1], hi[2], ranks.data(), &count),
-        "box assignment");
+  const Vec3 a = lo.cwiseProduct(zoltan_->scale), b = hi.cwiseProduct(zoltan_->scale);
+  check(Zoltan_LB_Box_Assign(zoltan_->zz, a[0], a[1], a[2], b[0], b[1], b[2], ranks.data(), &count), "box assignment");
   ranks.resize(static_cast<std::size_t>(count));
   return ranks;
 }
@@ -181,6 +255,11 @@ Box Partition::cutBox(int rank) const {
   check(Zoltan_RCB_Box(zoltan_->zz, rank, &dimensions, &box.lo[0], &box.lo[1], &box.lo[2], &box.hi[0], &box.hi[1],
                        &box.hi[2]),
         "subdomain box");
+  // (An outer face, +-DBL_MAX, stays one.)
+  for (int k = 0; k < 3; ++k) {
+    if (std::abs(box.lo[k]) < std::numeric_limits<double>::max()) box.lo[k] /= zoltan_->scale[k];
+    if (std::abs(box.hi[k]) < std::numeric_limits<double>::max()) box.hi[k] /= zoltan_->scale[k];
+  }
   return box;
 }
 
@@ -191,6 +270,8 @@ struct Partition::Zoltan {};
 Partition::Partition(const Communicator& comm) : comm_(comm) {}
 Partition::~Partition() = default;
 void Partition::cut(std::span<const Vec3>, std::span<const Index>, std::span<const double>) {}
+void Partition::partitionOnce() {}
+void Partition::create() {}
 int Partition::assign(const Vec3&) const {
   return 0;
 }

@@ -46,6 +46,8 @@ class Partition {
   // Zoltan's part (reached only with more than one rank): the cuts, the rank of a position, the
   // ranks a box meets, a rank's box as cut (outer faces at +-DBL_MAX).
   void cut(std::span<const Vec3> x, std::span<const Index> ids, std::span<const double> work);
+  void partitionOnce();
+  void create();
   int assign(const Vec3& x) const;
   std::vector<int> assign(const Vec3& lo, const Vec3& hi) const;
   Box cutBox(int rank) const;
@@ -53,10 +55,38 @@ class Partition {
   const Communicator& comm_;
   std::unique_ptr<Zoltan> zoltan_;
   bool balanced_ = false;
-  Box bounds_;  // of every rank's points at the last balance
+  bool directions_chosen_ = false;  // at the first cut (Partition::cut)
+  Box bounds_;                      // of every rank's points at the last balance
 };
 
 // The largest rank's work over the mean (1 when perfectly balanced). Collective.
 double imbalance(const Communicator& comm, double work);
+
+// When a distributed run's entries are cut afresh (docs/parallel.md, "Balance"). An impact moves its
+// work around (a crater's points gather neighbours, debris has few), so the balance of the first cut
+// drifts: the entries are cut afresh, where they are now and each weighted by its work in the last
+// step, once the imbalance passes both `at` and the balance the last cut reached by a twentieth (a
+// cut can only part a plate between its layers of points, so it may do no better than the one it
+// replaces).
+class Rebalance {
+ public:
+  static constexpr double at = 1.1;
+  // This rank's own work in the last step; true, on every rank, when the entries are to be cut
+  // afresh. Collective.
+  bool due(const Communicator& comm, double own_work);
+  // After a cut: the work of each own entry and the rank the cut gave it (the balance it reached,
+  // from exact integer sums). Collective.
+  void cut(const Communicator& comm, std::span<const double> work, std::span<const int> owner);
+  // The largest rank's work over the mean at the last due(), and the largest so far.
+  double imbalance() const { return imbalance_; }
+  double largestImbalance() const { return largest_imbalance_; }
+  // How many cuts afresh.
+  int count() const { return count_; }
+
+ private:
+  double imbalance_ = 1.0, largest_imbalance_ = 1.0;
+  double cut_balance_ = 1.0;
+  int count_ = 0;
+};
 
 }  // namespace kessler::parallel

@@ -94,19 +94,12 @@ void Distribution::rebuild(Model& model, std::vector<double>& volume_rate, doubl
   if (volume_rate.size() != points.x.size()) volume_rate.assign(points.x.size(), 0.0);
   model.lme_lambda.resize(points.x.size(), Vec3::Zero());
   TravellingPoints travelling(points, model.lme_lambda, volume_rate);
-  // An impact moves its work around (a crater's points gather nodes, debris has none), so the
-  // balance of the first cut drifts: past `rebalance_at` the points are cut afresh where they are
-  // now, each weighted by its work in the last step. Entries that left their subdomain move to its
-  // owner. Either way the ghosts go first; most steps neither happens, and the halos' build replaces
-  // the ghosts in place.
+  // Entries that left their subdomain move to its owner, and past the imbalance the points are cut
+  // afresh (parallel::Rebalance). Either way the ghosts go first; most steps neither happens, and the
+  // halos' build replaces the ghosts in place.
   const std::vector<LocalIndex> own = points_.ownEntries(points);
   const std::vector<double> work = ownWork(model, own);
-  imbalance_ = parallel::imbalance(comm_, std::accumulate(work.begin(), work.end(), 0.0));  // exact: integers
-  largest_imbalance_ = std::max(largest_imbalance_, imbalance_);
-  // A cut can only part a plate between its layers of points, so the balance it reaches may be no
-  // better than the one it replaces: the points are cut afresh once the imbalance passes both
-  // `rebalance_at` and the balance the last cut reached by a twentieth.
-  const bool rebalance = imbalance_ > std::max(rebalance_at, 1.05 * cut_balance_);  // the same on every rank
+  const bool rebalance = balance_.due(comm_, std::accumulate(work.begin(), work.end(), 0.0));  // exact: integers
   std::vector<int> point_owner, node_owner;
   bool leaving = false;
   if (!rebalance) {
@@ -120,14 +113,8 @@ void Distribution::rebuild(Model& model, std::vector<double>& volume_rate, doubl
     nodes_.dropGhosts(nodes);
     if (rebalance) {
       partition_.balance(points.x, points.id, work);  // the own points, in the same order
-      ++rebalances_;
       point_owner = owners(points, points_.ownEntries(points), partition_);
-      // The balance the cut reached: the work it gives each rank (exact integer sums).
-      std::vector<std::int64_t> given(static_cast<std::size_t>(comm_.size()), 0);
-      for (std::size_t k = 0; k < work.size(); ++k)
-        given[static_cast<std::size_t>(point_owner[k])] += static_cast<std::int64_t>(work[k]);
-      comm_.sum(given);
-      cut_balance_ = parallel::imbalance(comm_, static_cast<double>(given[static_cast<std::size_t>(comm_.rank())]));
+      balance_.cut(comm_, work, point_owner);
       node_owner = owners(nodes, nodes_.ownEntries(nodes), partition_);
     }
     parallel::migrate(travelling, point_owner, comm_);
@@ -185,12 +172,16 @@ std::optional<Model> Distribution::gather(const Model& model, bool rows) const {
   std::vector<double> no_rate(points.x.size(), 0.0);
   // (Packing only reads: the adaptor holds its arrays by plain reference for the writers too.)
   TravellingPoints travelling(const_cast<PointStore&>(points), lambda, no_rate);
-  std::vector<std::byte> point_bytes, node_bytes, row_bytes;
-  if (rows)
-    packFields(travelling, std::span<const LocalIndex>(own_points), point_bytes);
-  else
-    packFields(points, std::span<const LocalIndex>(own_points), point_bytes);
-  packFields(nodes, std::span<const LocalIndex>(own_nodes), node_bytes);
+  // (Every rank takes part in each gather; the others return after the last.)
+  Model whole;
+  std::vector<Vec3> whole_lambda;
+  std::vector<double> whole_rate;
+  TravellingPoints all(whole.points, whole_lambda, whole_rate);
+  const std::vector<parallel::MergeSource> point_from =
+      rows ? parallel::gatherById(travelling, std::span<const LocalIndex>(own_points), all, comm_)
+           : parallel::gatherById(points, std::span<const LocalIndex>(own_points), whole.points, comm_);
+  parallel::gatherById(nodes, std::span<const LocalIndex>(own_nodes), whole.nodes, comm_);
+  std::vector<std::byte> row_bytes;
   constexpr std::size_t entry_bytes = sizeof(Index) + sizeof(double) + sizeof(Vec3);
   if (rows) {
     std::size_t total = 0;
@@ -209,33 +200,13 @@ std::optional<Model> Distribution::gather(const Model& model, bool rows) const {
       for (Index e = conn.offset[p]; e < conn.offset[p + 1]; ++e) put(conn.dN[e]);
     }
   }
-  const auto points_in = comm_.gather(std::move(point_bytes));
-  const auto nodes_in = comm_.gather(std::move(node_bytes));
   const auto rows_in = comm_.gather(std::move(row_bytes));
   if (!comm_.root()) return std::nullopt;
 
-  Model whole;
   whole.bodies = model.bodies;
   whole.materials = model.materials;
   whole.adjacency = model.adjacency;
   whole.adjacency_length0 = model.adjacency_length0;
-  std::vector<Vec3> whole_lambda;
-  std::vector<double> whole_rate;
-  TravellingPoints all(whole.points, whole_lambda, whole_rate);
-  // Every rank's own entries, each in id order, merged by id; the rows with node indices.
-  auto packed = [](const std::vector<std::vector<std::byte>>& in, std::size_t bytes_each) {
-    std::vector<parallel::PackedEntries> lists;
-    for (const std::vector<std::byte>& bytes : in) {
-      KESSLER_VERIFY(bytes.size() % bytes_each == 0, "gathering: a message of {} bytes", bytes.size());
-      lists.push_back({bytes.data(), bytes.size() / bytes_each});
-    }
-    return lists;
-  };
-  std::vector<std::byte> scratch;
-  const std::vector<parallel::MergeSource> point_from =
-      rows ? parallel::mergeById(all, {}, packed(points_in, fieldBytes(all)), scratch)
-           : parallel::mergeById(whole.points, {}, packed(points_in, fieldBytes(whole.points)), scratch);
-  parallel::mergeById(whole.nodes, {}, packed(nodes_in, fieldBytes(whole.nodes)), scratch);
   whole.lme_lambda = rows ? std::move(whole_lambda) : std::vector<Vec3>(whole.points.x.size(), Vec3::Zero());
   if (!rows) return whole;
 

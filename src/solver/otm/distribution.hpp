@@ -44,12 +44,11 @@ class Distribution {
   std::optional<Model> gather(const Model& model, bool rows) const;
 
   // The largest rank's work over the mean at the last rebuild (its own points, each weighted by the
-  // entries of its row and a share for the point itself: ownWork), and the largest so far.
-  double imbalance() const { return imbalance_; }
-  double largestImbalance() const { return largest_imbalance_; }
-  // How many times the points were cut afresh because the imbalance passed `rebalance_at`.
-  int rebalances() const { return rebalances_; }
-  static constexpr double rebalance_at = 1.1;
+  // entries of its row and a share for the point itself: ownWork), the largest so far, and how many
+  // times the points were cut afresh (parallel::Rebalance).
+  double imbalance() const { return balance_.imbalance(); }
+  double largestImbalance() const { return balance_.largestImbalance(); }
+  int rebalances() const { return balance_.count(); }
 
   // After a phase that got ghosts wrong: the owners' values of one array, or of every array of a store.
   template <class T>
@@ -89,10 +88,8 @@ class Distribution {
 
   parallel::Partition partition_;
   parallel::Halo points_, nodes_;
-  double imbalance_ = 1.0, largest_imbalance_ = 1.0;
-  double cut_balance_ = 1.0;  // the imbalance the last cut left, by the work it was given
+  parallel::Rebalance balance_;
   LocalIndex own_points_ = 0;
-  int rebalances_ = 0;
   std::vector<std::uint8_t> searched_;
 };
 
