@@ -14,14 +14,11 @@ namespace kessler {
 
 namespace {
 
-void requireKnown(const Problem& problem, const parallel::Communicator* ranks) {
+void requireKnown(const Problem& problem) {
   const std::vector<std::string>& known = methodNames();
   if (std::find(known.begin(), known.end(), problem.method) == known.end())
     throw Error(fmt::format("solver.method '{}' is not a method of this Kessler (known: {})", problem.method,
                             fmt::join(known, ", ")));
-  if (problem.method != "otm" && ranks && ranks->size() > 1)
-    throw Error(fmt::format("solver.method {} does not yet run on several ranks (docs/parallel.md): run it on one",
-                            problem.method));
 }
 
 }  // namespace
@@ -32,15 +29,14 @@ const std::vector<std::string>& methodNames() {
 }
 
 std::unique_ptr<Method> makeMethod(const Problem& problem, const parallel::Communicator* ranks) {
-  requireKnown(problem, ranks);
-  if (problem.method == "sph")
-    return std::make_unique<sph::SphMethod>(sph::buildModel(problem), problem);
+  requireKnown(problem);
+  if (problem.method == "sph") return std::make_unique<sph::SphMethod>(sph::buildModel(problem), problem, ranks);
   return std::make_unique<otm::OtmMethod>(otm::buildModel(problem), problem, ranks);
 }
 
 std::unique_ptr<Method> makeMethod(const Problem& problem, ParticleState&& restored,
                                    const parallel::Communicator* ranks) {
-  requireKnown(problem, ranks);
+  requireKnown(problem);
   if (problem.method == "sph") {
     sph::Model model;
     static_cast<ParticleState&>(model) = std::move(restored);
@@ -49,7 +45,7 @@ std::unique_ptr<Method> makeMethod(const Problem& problem, ParticleState&& resto
     model.viscosity.resize(model.points.x.size(), 0.0);
     model.element.resize(model.points.x.size(), {-1, -1, -1});
     model.lattices.resize(model.bodies.size());
-    return std::make_unique<sph::SphMethod>(std::move(model), sph::settingsFor(problem));
+    return std::make_unique<sph::SphMethod>(std::move(model), sph::settingsFor(problem), ranks);
   }
   otm::Model model;
   static_cast<ParticleState&>(model) = std::move(restored);

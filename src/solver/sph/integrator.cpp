@@ -21,11 +21,18 @@ namespace {
 // contact at its default contact_distance (docs/theory.md §10).
 constexpr double contact_gap = 0.5;
 
+// A particle's work in a step, in pairs: its pairs' kernel, force and deformation terms go by the
+// pair, its material update, erosion and time step by the particle (about as much as 9 pairs).
+constexpr double pairs_per_particle = 9.0;
+
+constexpr const char* elsewhere = "stopped: a particle of another rank failed (that rank reports it)";
+
 }  // namespace
 
-Integrator::Integrator(Model& model, const Settings& settings)
+Integrator::Integrator(Model& model, const Settings& settings, Distribution* distribution)
     : model_(model),
       settings_(settings),
+      distribution_(distribution),
       reconstruction_(model),
       erosion_(settings.solver.erosion_radius),
       release_(settings.solver.erosion_radius) {
@@ -51,8 +58,10 @@ void Integrator::initialise() {
     ScopedPhase phase(timers_, "constitutive");
     updateMaterials(0.0);
   }
-  reconstruction_.rebuild(model_);
+  volume_rate_.assign(static_cast<std::size_t>(points.owned), 0.0);
+  if (distribution_) split();
   search();
+  reconstruction_.rebuild(model_);
   forces();
   volume_rate_.assign(static_cast<std::size_t>(points.owned), 0.0);
   clock_.dt_next = clock_.dt_initial = stableStep();
@@ -63,10 +72,57 @@ void Integrator::restore(const Clock& clock, LocalIndex distorted) {
   clock_ = clock;
   distorted_ = distorted;
   reconstruction_ = Reconstruction(model_);  // the restored elements
-  reconstruction_.rebuild(model_);
   volume_rate_.assign(static_cast<std::size_t>(model_.points.owned), 0.0);
+  if (distribution_) split();
   search();
+  reconstruction_.rebuild(model_);
   forces();
+}
+
+void Integrator::adopt(const Clock& clock, LocalIndex distorted) {
+  body_points_ = bodyRanges(model_.points.body, model_.points.owned, model_.bodies.size());
+  clock_ = clock;
+  distorted_ = distorted;
+  reconstruction_.rebuild(model_);
+}
+
+// Every rank holds the whole model (built or restored alike); each keeps its part, with the reach of
+// every particle's lattice neighbours measured while it holds them all.
+void Integrator::split() {
+  lattice_reach_ = reconstruction_.latticeReach(model_);
+  distribution_->split(model_, {volume_rate_, lattice_reach_});
+}
+
+// The ghosts the next search needs: each own particle is sent as far as any other rank's particle
+// may pair with it (its smoothing length and the largest), and an intact one as far as an erosion
+// ball reaches and its lattice neighbours lie (so that a rank holds every intact neighbour of its own
+// intact elements: their nodes are rebuilt as on one process).
+void Integrator::rebuildHalo() {
+  ScopedPhase phase(timers_, "halo");
+  const PointStore& points = model_.points;
+  const Share own = share();
+  double h_max = 0.0, ball = 0.0;
+  for (LocalIndex p = 0; p < points.owned; ++p) {
+    if (!own.own(p)) continue;
+    h_max = std::max(h_max, smoothingLength(p));
+    if (!points.broken[p]) ball = std::max(ball, settings_.solver.erosion_radius * points.spacing(p));
+  }
+  h_max = own.max(h_max);
+  ball = own.max(ball);
+  std::vector<double> work;
+  if (pairs_.offset.size() == static_cast<std::size_t>(points.owned) + 1) {
+    work.resize(static_cast<std::size_t>(points.owned));
+    for (LocalIndex i = 0; i < points.owned; ++i)
+      work[i] = pairs_per_particle + static_cast<double>(pairs_.offset[i + 1] - pairs_.offset[i] +
+                                                         pairs_.listed_offset[i + 1] - pairs_.listed_offset[i]);
+  }
+  const auto reach = [&](LocalIndex p) {
+    const double pairs = smoothingLength(p) + h_max;
+    return points.broken[p] ? pairs : std::max({pairs, ball, lattice_reach_[p]});
+  };
+  if (distribution_->rebuild(model_, {volume_rate_, lattice_reach_}, work, reach))
+    reconstruction_ = Reconstruction(model_);  // the elements of the particles held now
+  body_points_ = bodyRanges(points.body, points.owned, model_.bodies.size());
 }
 
 void Integrator::step() {
@@ -90,10 +146,12 @@ void Integrator::step() {
     }
     {
       ScopedPhase phase(timers_, "erosion");
+      // (The lattice reach before this step's failures: a particle that fails now counts as intact.)
+      if (distribution_) lattice_reach_ = reconstruction_.latticeReach(model_);
       reconstruction_.rebuild(model_);
-      distorted_ += reconstruction_.failDistorted(model_, settings_.sph.element_min_quality);
-      erosion_.apply(model_);
-      release_.apply(model_);
+      distorted_ += reconstruction_.failDistorted(model_, settings_.sph.element_min_quality, share());
+      erosion_.apply(model_, share());
+      release_.apply(model_, share());
     }
     search();
     forces();
@@ -114,8 +172,16 @@ double Integrator::smoothingLength(LocalIndex p) const {
 }
 
 double Integrator::meanNeighbours() const {
-  const LocalIndex n = model_.points.owned;
-  return n > 0 ? static_cast<double>(pairs_.neighbourCount()) / n : 0.0;
+  const Share own = share();
+  std::int64_t pairs = 0, particles = 0;
+  for (LocalIndex i = 0; i < model_.points.owned; ++i) {
+    if (!own.own(i)) continue;
+    pairs += pairs_.offset[i + 1] - pairs_.offset[i] + pairs_.listed_offset[i + 1] - pairs_.listed_offset[i];
+    ++particles;
+  }
+  pairs = own.sum(pairs);
+  particles = own.sum(particles);
+  return particles > 0 ? static_cast<double>(pairs) / static_cast<double>(particles) : 0.0;
 }
 
 // The pairs at the current positions; which take part in the deformation, the stress and the
@@ -125,7 +191,9 @@ double Integrator::meanNeighbours() const {
 // together, and no body feels another across a gap); the kernel correction B_i over the active
 // pairs.
 void Integrator::search() {
+  if (distribution_) rebuildHalo();
   ScopedPhase phase(timers_, "search");
+  const Share own = share();
   PointStore& points = model_.points;
   const auto n = static_cast<std::size_t>(points.owned);
   h_.resize(n);
@@ -134,7 +202,7 @@ void Integrator::search() {
     h_[p] = smoothingLength(static_cast<LocalIndex>(p));
     spacing_[p] = points.spacing(static_cast<LocalIndex>(p));
   }
-  pairs_.build(points.x, h_, points.owned, settings_.symmetry_axes);
+  pairs_.build(points.x, h_, points.owned, settings_.symmetry_axes, own);
   correction_.resize(n);
   struck_.assign(n, -1);
   // Which pairs are active: once per pair (the test is symmetric in its ends).
@@ -150,7 +218,7 @@ void Integrator::search() {
       const bool pressed = points.stress[i].trace() < 0.0 && points.stress[j].trace() < 0.0;
       pairs_.active[e] = within || (approaching && d.squaredNorm() < touching * touching) || pressed;
     }
-  LocalIndex uncorrected = 0;
+  std::int64_t uncorrected = 0;
 #pragma omp parallel for schedule(static) reduction(+ : uncorrected)
   for (LocalIndex i = 0; i < points.owned; ++i) {
     Mat3 moment = Mat3::Zero();
@@ -166,10 +234,12 @@ void Integrator::search() {
       correction_[i] = moment.inverse();
     } else {
       correction_[i].setIdentity();
-      uncorrected += points.debris(i) ? 0 : 1;
+      uncorrected += points.debris(i) || !own.own(i) ? 0 : 1;
     }
   }
-  uncorrected_ = uncorrected;
+  uncorrected_ = static_cast<LocalIndex>(own.sum(uncorrected));
+  // A ghost's correction lacks the pairs this rank does not hold: its owner's replaces it.
+  if (distribution_) distribution_->refresh(correction_);
   // A debris particle that met another body strikes it (the rear-wall analysis counts those): after
   // the loop, which reads every particle's state.
   for (LocalIndex i = 0; i < points.owned; ++i)
@@ -274,6 +344,11 @@ void Integrator::forces() {
     viscous_power_[i] = power;
     signal_[i] = signal;
   }
+  // A ghost's sums lack the pairs this rank does not hold (the kick and the heating read them).
+  if (distribution_) {
+    distribution_->refresh(acceleration_);
+    distribution_->refresh(viscous_power_);
+  }
 }
 
 // Step 2: each particle's deformation over the step from the kicked velocities, then the drift
@@ -281,6 +356,7 @@ void Integrator::forces() {
 void Integrator::deform(double dt) {
   PointStore& points = model_.points;
   volume_rate_.resize(static_cast<std::size_t>(points.owned));
+  const Share own = share();
   LocalIndex bad = points.owned;
 #pragma omp parallel for schedule(static) reduction(min : bad)
   for (LocalIndex i = 0; i < points.owned; ++i) {
@@ -299,10 +375,12 @@ void Integrator::deform(double dt) {
       points.dF[i] = dF;
     else if (points.failed(i))
       points.carrier[i] = -1;  // failed material crushed through itself is debris (as in OTM, docs/theory.md §8)
-    else
+    else if (own.own(i))
       bad = std::min(bad, i);
   }
-  if (bad < points.owned) failAtPoint(bad, "volume inverted or collapsed over the step (det dF <= 0)");
+  own.stopTogether(
+      bad < points.owned, [&] { failAtPoint(bad, "volume inverted or collapsed over the step (det dF <= 0)"); },
+      elsewhere);
 #pragma omp parallel for schedule(static)
   for (LocalIndex i = 0; i < points.owned; ++i) {
     points.x[i] += dt * points.v[i];
@@ -317,6 +395,9 @@ void Integrator::deform(double dt) {
     points.volume[i] *= J;
     volume_rate_[i] = std::log(J) / dt;
   }
+  // A ghost's velocity gradient lacks the pairs this rank does not hold: its owner's deformation
+  // (and viscosity coefficient) replace it before the material update.
+  if (distribution_) distribution_->refresh(model_);
 }
 
 // Morris & Monaghan's switch (J. Comput. Phys. 136:41, 1997): d alpha/dt = -(alpha - alpha_min) / tau
@@ -344,18 +425,26 @@ void Integrator::updateMaterials(double dt) {
   }
   // SPH's viscosity is its own: the laws' bulk viscosity stays off (limiter 1).
   std::fill(points.viscosity_limiter.begin(), points.viscosity_limiter.end(), 1.0);
+  const Share own = share();
+  LocalIndex failed = -1;
+  std::string why;
   try {
     updateBodies(model_, body_points_, dt);
   } catch (const PointError& e) {
-    failAtPoint(static_cast<LocalIndex>(e.point()), e.what());
+    failed = static_cast<LocalIndex>(e.point());
+    why = e.what();
   }
+  own.stopTogether(
+      failed >= 0, [&] { failAtPoint(failed, why); }, elsewhere);
   LocalIndex bad = points.owned;
 #pragma omp parallel for schedule(static) reduction(min : bad)
   for (LocalIndex p = 0; p < points.owned; ++p)
-    if (!points.stress[p].allFinite() || !std::isfinite(points.energy[p]) ||
-        !(points.debris(p) || points.sound_speed[p] >= 0.0))
+    if (own.own(p) && (!points.stress[p].allFinite() || !std::isfinite(points.energy[p]) ||
+                       !(points.debris(p) || points.sound_speed[p] >= 0.0)))
       bad = std::min(bad, p);
-  if (bad < points.owned) failAtPoint(bad, "the material update gave a non-finite stress, energy or sound speed");
+  own.stopTogether(
+      bad < points.owned,
+      [&] { failAtPoint(bad, "the material update gave a non-finite stress, energy or sound speed"); }, elsewhere);
 }
 
 // Monaghan's stable step (Monaghan, Annu. Rev. Astron. Astrophys. 30:543, 1992):
@@ -365,15 +454,18 @@ void Integrator::updateMaterials(double dt) {
 double Integrator::stableStep() const {
   const PointStore& points = model_.points;
   const SphOptions& o = settings_.sph;
+  const Share own = share();
   double dt = std::numeric_limits<double>::infinity();
 #pragma omp parallel for schedule(static) reduction(min : dt)
   for (LocalIndex p = 0; p < points.owned; ++p) {
+    if (!own.own(p)) continue;
     const double c = points.debris(p) ? 0.0 : points.sound_speed[p];
     // With the largest coefficients: a particle's alpha may rise within the step.
     const double signal = c + 1.2 * o.viscosity_max * (c + o.viscosity_ratio * signal_[p]);
     if (signal > 0.0) dt = std::min(dt, h_[p] / signal);
     if (volume_rate_[p] != 0.0) dt = std::min(dt, 1.0 / (3.0 * std::abs(volume_rate_[p])));
   }
+  dt = own.min(dt);
   KESSLER_VERIFY(
       std::isfinite(dt) && dt > 0.0,
       "no stable time step: every particle is debris or at rest without a sound speed, or the model is empty");
@@ -381,7 +473,7 @@ double Integrator::stableStep() const {
 }
 
 Energies Integrator::energies() const {
-  return pointEnergies(model_.points, 0.0);
+  return pointEnergies(model_.points, 0.0, share());
 }
 
 void Integrator::failAtPoint(LocalIndex p, const std::string& what) const {

@@ -18,6 +18,7 @@
 #include "solver/common/release.hpp"
 #include "solver/common/settings.hpp"
 #include "solver/common/walls.hpp"
+#include "solver/sph/distribution.hpp"
 #include "solver/sph/model.hpp"
 #include "solver/sph/pairs.hpp"
 #include "solver/sph/reconstruction.hpp"
@@ -35,13 +36,18 @@ struct Settings {
 
 class Integrator {
  public:
-  Integrator(Model& model, const Settings& settings);
+  // With `distribution`, this rank's part of a distributed run (docs/parallel.md, "SPH across ranks"):
+  // initialise() and restore() split the model that every rank holds alike.
+  Integrator(Model& model, const Settings& settings, Distribution* distribution = nullptr);
   // The first forces and time step of a new run.
   void initialise();
   // A restored run: the clock and the elements failed by distortion, then the nodes and forces of
   // the restored state (a pure function of it, so the run goes on as the one that wrote the
   // checkpoint).
   void restore(const Clock& clock, LocalIndex distorted);
+  // A gathered copy of a distributed run (for output and checkpoints): the run's clock and count of
+  // distorted elements, and the nodes of its particles' state; no pairs or forces.
+  void adopt(const Clock& clock, LocalIndex distorted);
   void step();
 
   bool finished() const { return clock_.time >= settings_.solver.end_time * (1.0 - 1e-12); }
@@ -52,15 +58,27 @@ class Integrator {
   // The smoothing length of particle p, m: `smoothing` times its current spacing, within a half and
   // twice its reference one (expanded debris does not widen every search).
   double smoothingLength(LocalIndex p) const;
+  // The mean pairs of a particle, over every rank (collective in a distributed run).
   double meanNeighbours() const;
-  // Particles whose kernel correction was singular at the last search (too few neighbours): they
-  // took the plain kernel gradient.
+  // Particles whose kernel correction was singular at the last search (too few neighbours), over
+  // every rank: they took the plain kernel gradient.
   LocalIndex uncorrected() const { return uncorrected_; }
-  const Reconstruction& reconstruction() const { return reconstruction_; }
+  // The reconstructed elements' nodes at the particles' current state (the step rebuilds them before
+  // erosion and release change velocities: output takes them afresh).
+  NodeCloud nodes() const {
+    reconstruction_.rebuild(model_);
+    return reconstruction_.cloud();
+  }
   // Elements failed by their distortion so far.
   LocalIndex distorted() const { return distorted_; }
 
  private:
+  // Which particles count and the ranks to reduce over (every particle, no ranks, on one process).
+  Share share() const { return distribution_ ? distribution_->share() : Share{}; }
+  // A distributed run's split of the model every rank holds (initialise, restore), and the halo for
+  // the next search.
+  void split();
+  void rebuildHalo();
   void search();
   void forces();
   void deform(double dt);
@@ -71,10 +89,11 @@ class Integrator {
 
   Model& model_;
   Settings settings_;
+  Distribution* distribution_ = nullptr;
   Clock clock_;
   PhaseTimers timers_;
   Pairs pairs_;
-  Reconstruction reconstruction_;
+  mutable Reconstruction reconstruction_;  // its nodes are a function of the particles (nodes())
   LocalIndex distorted_ = 0;
   Eigenerosion erosion_;
   DebrisRelease release_;
@@ -86,6 +105,7 @@ class Integrator {
   std::vector<double> viscous_power_;  // the viscosity's heating of each particle, W
   std::vector<double> signal_;         // the largest viscous signal speed mu of each particle, m/s
   std::vector<double> volume_rate_;    // ln J / dt of the last step
+  std::vector<double> lattice_reach_;  // a distributed run's: Reconstruction::latticeReach
   std::vector<double> heat_;
   // Per pair (forces()): its force on its listing particle, the viscosity's heating of each end and
   // its viscous signal speed.

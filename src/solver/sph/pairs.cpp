@@ -10,10 +10,18 @@
 namespace kessler::sph {
 
 void Pairs::build(std::span<const Vec3> x, std::span<const double> h, LocalIndex count,
-                  const std::vector<int>& symmetry_axes) {
+                  const std::vector<int>& symmetry_axes, const Share& share) {
   const auto n = static_cast<std::size_t>(count);
+  // The whole run's largest smoothing length and cell size (a distributed run's ranks agree on
+  // them, so that each particle meets its candidates in the one process's order).
   double h_max = 0.0;
-  for (std::size_t i = 0; i < n; ++i) h_max = std::max(h_max, h[i]);
+  std::int64_t own = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    h_max = std::max(h_max, h[i]);
+    own += share.own(static_cast<LocalIndex>(i)) ? 1 : 0;
+  }
+  h_max = share.max(h_max);
+  const double cell_size = agreedCellSize(x, count, own, 2.0 * h_max, share);
   if (n == 0) {
     *this = Pairs{};
     offset.assign(1, 0);
@@ -21,7 +29,7 @@ void Pairs::build(std::span<const Vec3> x, std::span<const double> h, LocalIndex
     return;
   }
   offset.assign(n + 1, 0);
-  cells_.build(x, count, 2.0 * h_max);
+  cells_.build(x, count, cell_size);
   // The image sets a particle near the planes sees: each non-empty subset of the axes whose planes
   // lie within its reach.
   std::uint8_t axes = 0;

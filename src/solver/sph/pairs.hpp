@@ -11,6 +11,7 @@
 // j's share reflected. Each particle gathers its pairs' shares in a fixed order (those it lists,
 // then those that list it, in the order of their listing particle), the same for any thread count.
 #include "search/cell_list.hpp"
+#include "solver/common/own_sums.hpp"
 #include "solver/sph/model.hpp"
 
 #include <cstdint>
@@ -51,9 +52,10 @@ struct Pairs {
   std::vector<std::uint8_t> listed_mirror;
 
   // The pairs of the first `count` positions with smoothing lengths h, and their images across the
-  // planes normal to `symmetry_axes` (particles at x[a] >= 0).
+  // planes normal to `symmetry_axes` (particles at x[a] >= 0). With `share` (a distributed run's
+  // own particles and ghosts, in id order), the cells are the whole run's. Collective then.
   void build(std::span<const Vec3> x, std::span<const double> h, LocalIndex count,
-             const std::vector<int>& symmetry_axes);
+             const std::vector<int>& symmetry_axes, const Share& share = {});
   Index size() const { return static_cast<Index>(other.size()); }
   // Each particle's pairs counted from both ends (a particle's pair with its own image once).
   Index neighbourCount() const { return 2 * size() - self_images_; }

@@ -20,23 +20,30 @@ Reconstruction::Reconstruction(const Model& model) {
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {
     const LatticeFrame& frame = model.lattices[b];
     if (frame.cell == Vec3::Zero()) continue;
-    // The body's nodes on a grid one larger than its elements' extent.
-    std::array<int, 3> hi{0, 0, 0};
-    for (std::size_t p = 0; p < n; ++p)
-      if (points.body[p] == static_cast<std::int32_t>(b))
-        for (int a = 0; a < 3; ++a) {
-          KESSLER_VERIFY(model.element[p][a] >= 0, "reconstruction: particle {} of a lattice body has no element",
-                         points.id[p]);
-          hi[a] = std::max(hi[a], model.element[p][a] + 2);
-        }
-    std::vector<LocalIndex> at(static_cast<std::size_t>(hi[0]) * hi[1] * hi[2], -1);
+    // The body's nodes on a grid one larger than its elements' extent (of the particles held: a
+    // distributed run's rank holds a part).
+    std::array<int, 3> lo{0, 0, 0}, hi{0, 0, 0};
+    bool held = false;
+    for (std::size_t p = 0; p < n; ++p) {
+      if (points.body[p] != static_cast<std::int32_t>(b)) continue;
+      const std::array<int, 3>& e = model.element[p];
+      KESSLER_VERIFY(e[0] >= 0 && e[1] >= 0 && e[2] >= 0,
+                     "reconstruction: particle {} of a lattice body has no element", points.id[p]);
+      for (int a = 0; a < 3; ++a) {
+        lo[a] = held ? std::min(lo[a], e[a]) : e[a];
+        hi[a] = held ? std::max(hi[a], e[a] + 2) : e[a] + 2;
+      }
+      held = true;
+    }
+    const std::array<int, 3> size{hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]};
+    std::vector<LocalIndex> at(static_cast<std::size_t>(size[0]) * size[1] * size[2], -1);
     for (std::size_t p = 0; p < n; ++p) {
       if (points.body[p] != static_cast<std::int32_t>(b)) continue;
       const std::array<int, 3>& e = model.element[p];
       particle_reference_[p] = frame.origin + (Vec3(e[0], e[1], e[2]) + Vec3::Constant(0.5)).cwiseProduct(frame.cell);
       for (int c = 0; c < 8; ++c) {
         const int i = e[0] + (c & 1), j = e[1] + ((c >> 1) & 1), k = e[2] + ((c >> 2) & 1);
-        LocalIndex& node = at[(static_cast<std::size_t>(k) * hi[1] + j) * hi[0] + i];
+        LocalIndex& node = at[(static_cast<std::size_t>(k - lo[2]) * size[1] + (j - lo[1])) * size[0] + (i - lo[0])];
         if (node < 0) {
           node = static_cast<LocalIndex>(id_.size());
           id_.push_back(static_cast<Index>(id_.size()));
@@ -79,7 +86,7 @@ void Reconstruction::rebuild(const Model& model) {
   }
 }
 
-LocalIndex Reconstruction::failDistorted(Model& model, double min_quality) {
+LocalIndex Reconstruction::failDistorted(Model& model, double min_quality, const Share& share) {
   PointStore& points = model.points;
   std::vector<std::uint8_t> fail(static_cast<std::size_t>(points.owned), 0);
 #pragma omp parallel for schedule(static)
@@ -106,13 +113,29 @@ LocalIndex Reconstruction::failDistorted(Model& model, double min_quality) {
   }
   // The element fails, not its material: the particle keeps its state and strength (a copper Taylor
   // bar's rim shears through the threshold without fracture), and belongs to no fragment.
-  LocalIndex failed = 0;
+  // (A ghost's element may lack nodes this rank cannot rebuild: its owner judges it.)
+  std::int64_t failed = 0;
   for (LocalIndex p = 0; p < points.owned; ++p) {
-    if (!fail[p]) continue;
+    if (!fail[p] || !share.own(p)) continue;
     points.loose[p] = 1;
     ++failed;
   }
-  return failed;
+  return static_cast<LocalIndex>(share.sum(failed));
+}
+
+std::vector<double> Reconstruction::latticeReach(const Model& model) const {
+  const PointStore& points = model.points;
+  std::vector<double> reach(static_cast<std::size_t>(points.owned), 0.0);
+#pragma omp parallel for schedule(static)
+  for (LocalIndex p = 0; p < points.owned; ++p) {
+    if (element_nodes_[p][0] < 0 || points.unlinked(p)) continue;
+    double farthest = 0.0;
+    for (const LocalIndex node : element_nodes_[p])
+      for (const LocalIndex q : node_elements_[node])
+        if (q >= 0 && q != p && !points.unlinked(q)) farthest = std::max(farthest, (points.x[q] - points.x[p]).norm());
+    reach[p] = farthest;
+  }
+  return reach;
 }
 
 NodeCloud Reconstruction::cloud() const {

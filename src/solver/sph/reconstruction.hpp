@@ -17,6 +17,7 @@
 // spall) fails an element too, and its material. Trusted fragments are the connected components of
 // intact elements that share a node (the lattice's adjacency; analysis/fragments.hpp).
 #include "solver/common/node_cloud.hpp"
+#include "solver/common/own_sums.hpp"
 #include "solver/sph/model.hpp"
 
 #include <array>
@@ -31,8 +32,14 @@ class Reconstruction {
   // The nodes from the particles' current state.
   void rebuild(const Model& model);
   // Makes loose every intact particle whose element's quality is below `min_quality` (after
-  // rebuild); returns how many.
-  LocalIndex failDistorted(Model& model, double min_quality);
+  // rebuild); returns how many (with `share`, of the own particles over every rank: a ghost is
+  // judged by its owner).
+  LocalIndex failDistorted(Model& model, double min_quality, const Share& share = {});
+  // Per particle held, the distance to the farthest intact particle whose element shares a node with
+  // its own (0 for a particle without an element, or broken or loose). A distributed run's halo
+  // sends each particle at least this far (docs/parallel.md, "SPH across ranks"), so that a rank
+  // holds every intact neighbour of its own intact elements and rebuilds their nodes as one process.
+  std::vector<double> latticeReach(const Model& model) const;
   // The smallest scaled corner Jacobian of particle p's element at the last failDistorted (1: a cube);
   // NaN for a particle without an element, or broken or loose before it.
   double quality(LocalIndex p) const { return quality_[static_cast<std::size_t>(p)]; }

@@ -11,17 +11,53 @@ Settings settingsFor(const Problem& problem) {
   return Settings{problem.settings.solver, problem.settings.sph, problem.walls, problem.symmetry_axes};
 }
 
-SphMethod::SphMethod(Model model, const Settings& settings)
-    : model_(std::move(model)), integrator_(model_, settings), diagnostics_(settings.solver) {}
+namespace {
 
-SphMethod::SphMethod(Model model, const Problem& problem) : SphMethod(std::move(model), settingsFor(problem)) {
-  // The particles never move between stores or ranks: their indices hold for the run.
-  for (const PlaneConstraint& plane : problem.planes)
-    if (plane.history) histories_.push_back({plane.axis, plane.history, particlesOnPlane(model_, plane)});
+std::unique_ptr<Distribution> distributionFor(const parallel::Communicator* ranks) {
+  return ranks && ranks->size() > 1 ? std::make_unique<Distribution>(*ranks) : nullptr;
+}
+
+}  // namespace
+
+SphMethod::SphMethod(Model model, const Settings& settings, const parallel::Communicator* ranks)
+    : model_(std::move(model)),
+      distribution_(distributionFor(ranks)),
+      integrator_(model_, settings, distribution_.get()),
+      diagnostics_(settings.solver) {}
+
+SphMethod::SphMethod(Model model, const Problem& problem, const parallel::Communicator* ranks)
+    : SphMethod(std::move(model), settingsFor(problem), ranks) {
+  for (const PlaneConstraint& plane : problem.planes) {
+    if (!plane.history) continue;
+    History h{plane.axis, plane.history, {}, {}};
+    for (const LocalIndex p : particlesOnPlane(model_, plane)) h.ids.push_back(model_.points.id[p]);
+    histories_.push_back(std::move(h));
+  }
+}
+
+void SphMethod::initialise() {
+  integrator_.initialise();
+  locateHistories();
+}
+
+void SphMethod::locateHistories() {
+  if (histories_.empty()) return;
+  const IdIndex index(model_.points.id);
+  for (History& h : histories_) {
+    h.particles.clear();
+    for (const Index id : h.ids) {
+      const LocalIndex p = index.find(id);
+      // A distributed run's rank holds some of the plane's particles.
+      KESSLER_VERIFY(p >= 0 || distribution_, "prescribed velocity history: particle {} is not in the store", id);
+      if (p >= 0) h.particles.push_back(p);
+    }
+  }
+  located_ = distribution_ ? distribution_->layout() : 0;
 }
 
 void SphMethod::step() {
-  // The histories at the middle of the step, as OTM's.
+  // The histories at the middle of the step, as OTM's, on the particles where they are now.
+  if (distribution_ && distribution_->layout() != located_) locateHistories();
   const Clock c = integrator_.clock();
   for (const History& h : histories_) {
     const double v = h.velocity(c.time + 0.5 * c.dt_next);
@@ -33,21 +69,65 @@ void SphMethod::step() {
 void SphMethod::check(double initial_total_energy) {
   const Clock c = integrator_.clock();
   const StepInfo at{c.steps, c.time, c.dt_next, c.dt_initial};
-  auto driven = [&] {  // a piston does work
-    for (LocalIndex p = 0; p < model_.points.owned; ++p)
-      if (model_.constrained[p] != 0 && model_.prescribed_v[p].squaredNorm() > 0.0) return true;
-    return false;
+  // A piston does work (the same answer on every rank of a distributed run: a velocity history, or
+  // a prescribed velocity held by any rank).
+  auto driven = [&] {
+    bool here = !histories_.empty();
+    for (LocalIndex p = 0; p < model_.points.owned && !here; ++p)
+      here = model_.constrained[p] != 0 && model_.prescribed_v[p].squaredNorm() > 0.0;
+    return here;
   };
   const StepLengthRule rule{[&](LocalIndex p) { return integrator_.smoothingLength(p); },
                             [&](LocalIndex) { return std::string("its smoothing length"); }};
-  diagnostics_.check(model_, at, initial_total_energy, rule, driven);
+  if (!distribution_) {
+    diagnostics_.check(model_, at, initial_total_energy, rule, driven);
+    return;
+  }
+  // Every rank stops if one does (the others would wait for it).
+  const Share share = distribution_->share();
+  const bool piston = share.any(driven());
+  std::optional<NumericalError> failure;
+  try {
+    diagnostics_.check(
+        model_, at, initial_total_energy, rule, [&] { return piston; }, share);
+  } catch (const NumericalError& e) {
+    failure = e;
+  }
+  const std::string elsewhere = fmt::format("{}: another rank's health check failed", describeStep(at));
+  share.stopTogether(
+      failure.has_value(), [&] { throw *failure; }, elsewhere.c_str());
 }
 
 std::vector<std::pair<std::string, double>> SphMethod::sizes() const {
-  return {{"mean_neighbours", integrator_.meanNeighbours()}};
+  if (report_) return report_->sizes;
+  std::vector<std::pair<std::string, double>> sizes{{"mean_neighbours", integrator_.meanNeighbours()}};
+  if (!distribution_) return sizes;
+  const Distribution& d = *distribution_;
+  const std::vector<std::pair<std::string, double>> ranks{{"ranks", d.comm().size()},
+                                                          {"imbalance", d.imbalance()},
+                                                          {"largest_imbalance", d.largestImbalance()},
+                                                          {"rebalances", d.rebalances()},
+                                                          {"rank0_own_particles", d.ownParticles()},
+                                                          {"rank0_ghost_particles", d.ghostParticles()},
+                                                          {"halo_fetches", static_cast<double>(d.haloFetches())},
+                                                          {"halo_keeps", static_cast<double>(d.haloKeeps())}};
+  sizes.insert(sizes.end(), ranks.begin(), ranks.end());
+  return sizes;
+}
+
+std::unique_ptr<Method> SphMethod::gathered(bool) const {
+  if (!distribution_) return nullptr;
+  std::vector<std::pair<std::string, double>> sizes = this->sizes();  // collective
+  std::optional<Model> whole = distribution_->gather(model_);
+  if (!whole) return nullptr;
+  auto method = std::make_unique<SphMethod>(std::move(*whole), integrator_.settings());
+  method->integrator_.adopt(integrator_.clock(), integrator_.distorted());
+  method->report_ = Report{integrator_.timers(), std::move(sizes), notes()};
+  return method;
 }
 
 std::vector<std::string> SphMethod::notes() const {
+  if (report_) return report_->notes;
   std::vector<std::string> notes;
   if (const LocalIndex n = integrator_.distorted(); n > 0)
     notes.push_back(

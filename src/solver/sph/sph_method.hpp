@@ -7,6 +7,8 @@
 #include "solver/sph/model.hpp"
 
 #include <functional>
+#include <memory>
+#include <optional>
 #include <vector>
 
 namespace kessler::sph {
@@ -16,31 +18,34 @@ Settings settingsFor(const Problem& problem);
 
 class SphMethod final : public Method {
  public:
-  // One process only: SPH does not yet run on several ranks (docs/parallel.md).
-  SphMethod(Model model, const Settings& settings);
+  // With `ranks` of more than one process, this rank runs its part of the model (which every rank
+  // built alike; docs/parallel.md, "SPH across ranks").
+  SphMethod(Model model, const Settings& settings, const parallel::Communicator* ranks = nullptr);
   // A new run of `problem`: its planes' velocity histories are taken up (a restored run, built
   // from its settings alone, does not take them up, as OTM's).
-  SphMethod(Model model, const Problem& problem);
+  SphMethod(Model model, const Problem& problem, const parallel::Communicator* ranks = nullptr);
   SphMethod(const SphMethod&) = delete;
   SphMethod& operator=(const SphMethod&) = delete;
 
   const char* name() const override { return "sph"; }
-  void initialise() override { integrator_.initialise(); }
+  void initialise() override;
   void step() override;
   void check(double initial_total_energy) override;
   bool finished() const override { return integrator_.finished(); }
   double endTime() const override { return integrator_.settings().solver.end_time; }
   Clock clock() const override { return integrator_.clock(); }
   Energies energies() const override { return integrator_.energies(); }
-  const PhaseTimers& timers() const override { return integrator_.timers(); }
+  const PhaseTimers& timers() const override { return report_ ? report_->timers : integrator_.timers(); }
   const ParticleState& state() const override { return model_; }
   // The reconstructed elements' nodes (solver/sph/reconstruction.hpp).
-  NodeCloud nodes() const override { return integrator_.reconstruction().cloud(); }
+  NodeCloud nodes() const override { return integrator_.nodes(); }
   std::vector<std::pair<std::string, double>> sizes() const override;
   std::vector<std::string> notes() const override;
   double stepLength(LocalIndex p) const override { return integrator_.smoothingLength(p); }
   void save(StateWriter& out) const override;
   void load(const StateReader& in) override;
+  bool distributed() const override { return distribution_ != nullptr; }
+  std::unique_ptr<Method> gathered(bool for_checkpoint) const override;
 
   const Model& model() const { return model_; }
   const Integrator& integrator() const { return integrator_; }
@@ -50,13 +55,26 @@ class SphMethod final : public Method {
   struct History {
     int axis = 0;
     std::function<double(double)> velocity;
-    std::vector<LocalIndex> particles;
+    std::vector<Index> ids;             // the plane's particles, found when the model is built
+    std::vector<LocalIndex> particles;  // and where they are now (locateHistories)
+  };
+  // The histories' particles in the store's current order (a distributed run's move between ranks).
+  void locateHistories();
+  // What a gathered method reports for the distributed run it stands for (rank 0's timers, the
+  // sizes and notes of the whole run).
+  struct Report {
+    PhaseTimers timers;
+    std::vector<std::pair<std::string, double>> sizes;
+    std::vector<std::string> notes;
   };
 
   Model model_;
-  Integrator integrator_;  // holds a reference to model_
+  std::unique_ptr<Distribution> distribution_;  // a distributed run's; before the integrator, which holds it
+  Integrator integrator_;                       // holds a reference to model_
   PointDiagnostics diagnostics_;
   std::vector<History> histories_;
+  long located_ = -1;             // the distribution's layout the histories were located in
+  std::optional<Report> report_;  // a gathered method's
 };
 
 }  // namespace kessler::sph
