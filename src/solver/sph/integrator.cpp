@@ -147,7 +147,7 @@ void Integrator::step() {
     {
       ScopedPhase phase(timers_, "erosion");
       // (The lattice reach before this step's failures: a particle that fails now counts as intact.)
-      if (distribution_) lattice_reach_ = reconstruction_.latticeReach(model_);
+      if (distribution_) lattice_reach_ = reconstruction_.latticeReach(model_, share());
       reconstruction_.rebuild(model_);
       distorted_ += reconstruction_.failDistorted(model_, settings_.sph.element_min_quality, share());
       erosion_.apply(model_, share());
@@ -221,6 +221,7 @@ void Integrator::search() {
   std::int64_t uncorrected = 0;
 #pragma omp parallel for schedule(static) reduction(+ : uncorrected)
   for (LocalIndex i = 0; i < points.owned; ++i) {
+    if (!own.own(i)) continue;  // a ghost's correction is its owner's (refreshed below)
     Mat3 moment = Mat3::Zero();
     pairs_.forEachOf(i, [&](LocalIndex j, std::uint8_t m, const Vec3& grad, bool active) {
       if (!active) return;
@@ -323,9 +324,12 @@ void Integrator::forces() {
       share.force = f;
     }
   }
-  // Each particle's sum over its pairs, from both ends, in a fixed order.
+  // Each particle's sum over its pairs, from both ends, in a fixed order (a ghost's is its owner's,
+  // refreshed below).
+  const Share own = share();
 #pragma omp parallel for schedule(static)
   for (LocalIndex i = 0; i < points.owned; ++i) {
+    if (!own.own(i)) continue;
     Vec3 f = Vec3::Zero();
     double power = 0.0, signal = 0.0;
     for (Index e = pairs_.offset[i]; e < pairs_.offset[i + 1]; ++e) {
@@ -360,6 +364,7 @@ void Integrator::deform(double dt) {
   LocalIndex bad = points.owned;
 #pragma omp parallel for schedule(static) reduction(min : bad)
   for (LocalIndex i = 0; i < points.owned; ++i) {
+    if (!own.own(i)) continue;  // a ghost's deformation is its owner's (refreshed below)
     points.dF[i].setIdentity();
     if (points.debris(i)) continue;
     Mat3 gradient = Mat3::Zero();
@@ -375,7 +380,7 @@ void Integrator::deform(double dt) {
       points.dF[i] = dF;
     else if (points.failed(i))
       points.carrier[i] = -1;  // failed material crushed through itself is debris (as in OTM, docs/theory.md §8)
-    else if (own.own(i))
+    else
       bad = std::min(bad, i);
   }
   own.stopTogether(
@@ -383,6 +388,7 @@ void Integrator::deform(double dt) {
       elsewhere);
 #pragma omp parallel for schedule(static)
   for (LocalIndex i = 0; i < points.owned; ++i) {
+    if (!own.own(i)) continue;
     points.x[i] += dt * points.v[i];
     if (points.debris(i)) {
       points.stress[i].setZero();
@@ -395,8 +401,8 @@ void Integrator::deform(double dt) {
     points.volume[i] *= J;
     volume_rate_[i] = std::log(J) / dt;
   }
-  // A ghost's velocity gradient lacks the pairs this rank does not hold: its owner's deformation
-  // (and viscosity coefficient) replace it before the material update.
+  // A ghost's deformation, drift and viscosity coefficient are its owner's, before the material
+  // update (its velocity gradient would lack the pairs this rank does not hold).
   if (distribution_) distribution_->refresh(model_);
 }
 

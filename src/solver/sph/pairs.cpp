@@ -36,6 +36,7 @@ void Pairs::build(std::span<const Vec3> x, std::span<const double> h, LocalIndex
   for (const int a : symmetry_axes) axes |= static_cast<std::uint8_t>(1u << a);
   const auto visit = [&](std::size_t i, auto&& f) {
     const double reach = h[i] + h_max;
+    const bool ghost = !share.own(static_cast<LocalIndex>(i));
     for (std::uint8_t m = 0; m < 8; ++m) {
       if ((m & axes) != m) continue;
       bool near = true;
@@ -45,6 +46,7 @@ void Pairs::build(std::span<const Vec3> x, std::span<const double> h, LocalIndex
       cells_.forEachWithin(reflect(x[i], m), reach, [&](LocalIndex j, double d2) {
         // Each pair once, by its lower particle (a particle's own image once).
         if (static_cast<std::size_t>(j) < i || (m == 0 && static_cast<std::size_t>(j) == i)) return;
+        if (ghost && !share.own(j)) return;  // two ghosts: no own particle reads the pair
         const double support = h[i] + h[static_cast<std::size_t>(j)];
         if (d2 < support * support) f(j, m);
       });

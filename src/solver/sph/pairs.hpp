@@ -53,7 +53,8 @@ struct Pairs {
 
   // The pairs of the first `count` positions with smoothing lengths h, and their images across the
   // planes normal to `symmetry_axes` (particles at x[a] >= 0). With `share` (a distributed run's
-  // own particles and ghosts, in id order), the cells are the whole run's. Collective then.
+  // own particles and ghosts, in id order), the cells are the whole run's, and pairs of two ghosts
+  // are left out (no own particle reads them: a ghost's sums are its owner's). Collective then.
   void build(std::span<const Vec3> x, std::span<const double> h, LocalIndex count,
              const std::vector<int>& symmetry_axes, const Share& share = {});
   Index size() const { return static_cast<Index>(other.size()); }

@@ -92,7 +92,8 @@ LocalIndex Reconstruction::failDistorted(Model& model, double min_quality, const
 #pragma omp parallel for schedule(static)
   for (LocalIndex p = 0; p < points.owned; ++p) {
     const std::array<LocalIndex, 8>& nodes = element_nodes_[p];
-    if (nodes[0] < 0 || points.unlinked(p)) {
+    // (A ghost's element may lack nodes this rank cannot rebuild: its owner judges it.)
+    if (nodes[0] < 0 || points.unlinked(p) || !share.own(p)) {
       quality_[p] = std::numeric_limits<double>::quiet_NaN();
       continue;
     }
@@ -113,27 +114,27 @@ LocalIndex Reconstruction::failDistorted(Model& model, double min_quality, const
   }
   // The element fails, not its material: the particle keeps its state and strength (a copper Taylor
   // bar's rim shears through the threshold without fracture), and belongs to no fragment.
-  // (A ghost's element may lack nodes this rank cannot rebuild: its owner judges it.)
   std::int64_t failed = 0;
   for (LocalIndex p = 0; p < points.owned; ++p) {
-    if (!fail[p] || !share.own(p)) continue;
+    if (!fail[p]) continue;
     points.loose[p] = 1;
     ++failed;
   }
   return static_cast<LocalIndex>(share.sum(failed));
 }
 
-std::vector<double> Reconstruction::latticeReach(const Model& model) const {
+std::vector<double> Reconstruction::latticeReach(const Model& model, const Share& share) const {
   const PointStore& points = model.points;
   std::vector<double> reach(static_cast<std::size_t>(points.owned), 0.0);
 #pragma omp parallel for schedule(static)
   for (LocalIndex p = 0; p < points.owned; ++p) {
-    if (element_nodes_[p][0] < 0 || points.unlinked(p)) continue;
+    if (element_nodes_[p][0] < 0 || points.unlinked(p) || !share.own(p)) continue;
     double farthest = 0.0;
     for (const LocalIndex node : element_nodes_[p])
       for (const LocalIndex q : node_elements_[node])
-        if (q >= 0 && q != p && !points.unlinked(q)) farthest = std::max(farthest, (points.x[q] - points.x[p]).norm());
-    reach[p] = farthest;
+        if (q >= 0 && q != p && !points.unlinked(q))
+          farthest = std::max(farthest, (points.x[q] - points.x[p]).squaredNorm());
+    reach[p] = std::sqrt(farthest);
   }
   return reach;
 }

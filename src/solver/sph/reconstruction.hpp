@@ -36,12 +36,13 @@ class Reconstruction {
   // judged by its owner).
   LocalIndex failDistorted(Model& model, double min_quality, const Share& share = {});
   // Per particle held, the distance to the farthest intact particle whose element shares a node with
-  // its own (0 for a particle without an element, or broken or loose). A distributed run's halo
-  // sends each particle at least this far (docs/parallel.md, "SPH across ranks"), so that a rank
-  // holds every intact neighbour of its own intact elements and rebuilds their nodes as one process.
-  std::vector<double> latticeReach(const Model& model) const;
+  // its own (0 for a particle without an element, or broken or loose, and with `share` for a
+  // ghost). A distributed run's halo sends each particle at least this far (docs/parallel.md, "SPH
+  // across ranks"), so that a rank holds every intact neighbour of its own intact elements and
+  // rebuilds their nodes as one process.
+  std::vector<double> latticeReach(const Model& model, const Share& share = {}) const;
   // The smallest scaled corner Jacobian of particle p's element at the last failDistorted (1: a cube);
-  // NaN for a particle without an element, or broken or loose before it.
+  // NaN for a particle without an element, or broken or loose before it, or a ghost.
   double quality(LocalIndex p) const { return quality_[static_cast<std::size_t>(p)]; }
   NodeCloud cloud() const;
 
