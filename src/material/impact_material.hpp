@@ -63,6 +63,7 @@ class ImpactMaterial final : public Material {
   void update(PointStore& points, LocalIndex begin, LocalIndex end, double dt) const override;
   // Into the specific internal energy and, through the specific heat, the temperature.
   void heat(PointStore& points, LocalIndex begin, LocalIndex end, std::span<const double> heat) const override;
+  bool takesHeat() const override { return true; }
   const ImpactMaterialParameters& parameters() const { return p_; }
 
  private:

@@ -37,6 +37,8 @@ class Material {
   // A law without a thermal state (an elastic solid, whose energy is its stored energy) takes none.
   virtual void heat(PointStore& /*points*/, LocalIndex /*begin*/, LocalIndex /*end*/,
                     std::span<const double> /*heat*/) const {}
+  // Whether heat() takes the heat it is given (a law with a thermal state).
+  virtual bool takesHeat() const { return false; }
 };
 
 using MaterialPtr = std::shared_ptr<const Material>;

@@ -11,8 +11,9 @@ struct Energies {
   double kinetic = 0.0;   // 1/2 sum m_p |v_p|^2
   double internal = 0.0;  // sum m_p e_p
   // Energy a method's stabilisation stores, kept apart from the material's internal energy, which it
-  // must not heat (OTM: the work of the volume stabilisation's pressure, docs/theory.md §4); 0 for
-  // a method without one.
+  // must not heat (OTM: the work of the volume stabilisation's pressure, docs/theory.md §4; SPH: the
+  // heat of its viscosity in a law without a thermal state, which takes none, docs/theory.md §10); 0
+  // for a method without one.
   double stabilisation = 0.0;
   Vec3 momentum = Vec3::Zero();
   double total() const { return kinetic + internal + stabilisation; }

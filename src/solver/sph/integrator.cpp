@@ -67,10 +67,11 @@ void Integrator::initialise() {
   clock_.dt_next = clock_.dt_initial = stableStep();
 }
 
-void Integrator::restore(const Clock& clock, LocalIndex distorted) {
+void Integrator::restore(const Clock& clock, LocalIndex distorted, double dissipated) {
   body_points_ = bodyRanges(model_.points.body, model_.points.owned, model_.bodies.size());
   clock_ = clock;
   distorted_ = distorted;
+  dissipated_ = dissipated;
   reconstruction_ = Reconstruction(model_);  // the restored elements
   volume_rate_.assign(static_cast<std::size_t>(model_.points.owned), 0.0);
   if (distribution_) split();
@@ -79,10 +80,11 @@ void Integrator::restore(const Clock& clock, LocalIndex distorted) {
   forces();
 }
 
-void Integrator::adopt(const Clock& clock, LocalIndex distorted) {
+void Integrator::adopt(const Clock& clock, LocalIndex distorted, double dissipated) {
   body_points_ = bodyRanges(model_.points.body, model_.points.owned, model_.bodies.size());
   clock_ = clock;
   distorted_ = distorted;
+  dissipated_ = dissipated;
   reconstruction_.rebuild(model_);
 }
 
@@ -426,8 +428,19 @@ void Integrator::updateMaterials(double dt) {
     heatBodies(model_, body_points_, heat_);
     // The laws heat no debris (it has no thermal update): its share is kept as internal energy, so
     // that a debris cloud's collisions conserve energy.
+    bool athermal = false;
     for (LocalIndex p = 0; p < points.owned; ++p)
-      if (points.debris(p)) points.energy[p] += heat_[p] / points.mass[p];
+      if (points.debris(p))
+        points.energy[p] += heat_[p] / points.mass[p];
+      else
+        athermal = athermal || !model_.materials[model_.bodies[points.body[p]].material]->takesHeat();
+    // A law without a thermal state takes none: its share is booked apart (an exact sum over own
+    // particles and every rank).
+    if (share().any(athermal))
+      dissipated_ += ownSum(share(), points.owned, [&](LocalIndex p) {
+        const bool takes = model_.materials[model_.bodies[points.body[p]].material]->takesHeat();
+        return points.debris(p) || takes ? 0.0 : heat_[p];
+      });
   }
   // SPH's viscosity is its own: the laws' bulk viscosity stays off (limiter 1).
   std::fill(points.viscosity_limiter.begin(), points.viscosity_limiter.end(), 1.0);
@@ -479,7 +492,7 @@ double Integrator::stableStep() const {
 }
 
 Energies Integrator::energies() const {
-  return pointEnergies(model_.points, 0.0, share());
+  return pointEnergies(model_.points, dissipated_, share());
 }
 
 void Integrator::failAtPoint(LocalIndex p, const std::string& what) const {

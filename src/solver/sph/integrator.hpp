@@ -44,10 +44,10 @@ class Integrator {
   // A restored run: the clock and the elements failed by distortion, then the nodes and forces of
   // the restored state (a pure function of it, so the run goes on as the one that wrote the
   // checkpoint).
-  void restore(const Clock& clock, LocalIndex distorted);
+  void restore(const Clock& clock, LocalIndex distorted, double dissipated);
   // A gathered copy of a distributed run (for output and checkpoints): the run's clock and count of
   // distorted elements, and the nodes of its particles' state; no pairs or forces.
-  void adopt(const Clock& clock, LocalIndex distorted);
+  void adopt(const Clock& clock, LocalIndex distorted, double dissipated);
   void step();
 
   bool finished() const { return clock_.time >= settings_.solver.end_time * (1.0 - 1e-12); }
@@ -71,6 +71,9 @@ class Integrator {
   }
   // Elements failed by their distortion so far.
   LocalIndex distorted() const { return distorted_; }
+  // The viscosity's heat so far in bodies whose law has no thermal state (it takes none), J: booked
+  // apart, as the energies' stabilisation, so that the budget closes.
+  double dissipated() const { return dissipated_; }
 
  private:
   // Which particles count and the ranks to reduce over (every particle, no ranks, on one process).
@@ -95,6 +98,7 @@ class Integrator {
   Pairs pairs_;
   mutable Reconstruction reconstruction_;  // its nodes are a function of the particles (nodes())
   LocalIndex distorted_ = 0;
+  double dissipated_ = 0.0;
   Eigenerosion erosion_;
   DebrisRelease release_;
   std::vector<IndexRange> body_points_;
