@@ -46,10 +46,11 @@ double CellList::enlargedSize(const Bounds& b, std::int64_t count, double cell_s
   return cell;
 }
 
-void CellList::build(std::span<const Vec3> x, LocalIndex count, double cell_size) {
+void CellList::build(std::span<const Vec3> x, LocalIndex count, double cell_size, bool enlarge) {
   const Bounds bounds = boundsOf(x, count);
   const Vec3 &lo = bounds.lo, &hi = bounds.hi;
-  cell_ = enlargedSize(bounds, count, cell_size);
+  KESSLER_VERIFY(cell_size > 0.0 && std::isfinite(cell_size), "cell list: invalid cell size {}", cell_size);
+  cell_ = enlarge ? enlargedSize(bounds, count, cell_size) : cell_size;
   // The cells lie on a lattice through the origin of space, not through this set's corner: the cell
   // a position falls in, and so the order in which a query visits positions, is then the same in
   // any set that holds it, given the cell size (a distributed run's ranks hold overlapping sets and

@@ -21,12 +21,14 @@ namespace kessler {
 
 class CellList {
  public:
-  // Bins positions [0, count) into cubic cells of edge `cell_size` (enlarged if the grid
-  // would have far more cells than positions, e.g. for a sparse debris cloud).
-  void build(std::span<const Vec3> x, LocalIndex count, double cell_size);
+  // Bins positions [0, count) into cubic cells of edge `cell_size`, enlarged if the grid would have
+  // far more cells than positions (e.g. for a sparse debris cloud) unless `enlarge` is false.
+  void build(std::span<const Vec3> x, LocalIndex count, double cell_size, bool enlarge = true);
   // The cell size build() uses: `cell_size`, enlarged where `count` positions within `bounds` spread
   // so far that the grid would exceed a few cells per position. A distributed run's ranks find it
-  // from the whole run's bounds and count, and build with it (no rank's part is enlarged further).
+  // from the whole run's bounds and count (agreedCellSize), and build with it as it is: a rank's
+  // part, as spread as the whole with fewer positions, would be enlarged further, and its queries
+  // would meet their candidates in another order.
   struct Bounds {
     Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();
   };

@@ -177,6 +177,13 @@ TEST(DistributedStep, CellSizeAgreedAsForTheWholeSet) {
   const double alone = CellList::enlargedSize(CellList::boundsOf(mine, static_cast<LocalIndex>(mine.size())),
                                               static_cast<std::int64_t>(mine.size()), cell);
   EXPECT_TRUE(world().any(alone != expected)) << "the test needs a part that would choose another size";
+  // A part as spread as the whole, with fewer positions, is built with the agreed size as it is; left
+  // to enlarge it again, some rank's cells would differ.
+  CellList cells;
+  cells.build(mine, static_cast<LocalIndex>(mine.size()), agreed, /*enlarge=*/false);
+  EXPECT_EQ(cells.cellSize(), expected);
+  cells.build(mine, static_cast<LocalIndex>(mine.size()), agreed);
+  EXPECT_TRUE(world().any(cells.cellSize() != expected)) << "the test needs a part that would be enlarged further";
 }
 
 }  // namespace

@@ -86,7 +86,7 @@ void DebrisContact::apply(ParticleState& model, const Carriers& nodes, double dt
     for (LocalIndex a = 0; a < nodes.owned; ++a) own += ownNode(a) ? 1 : 0;
     cell = agreedCellSize(nodes.x, static_cast<LocalIndex>(nodes.x.size()), own, cell, share);
   }
-  cells_.build(nodes.x, static_cast<LocalIndex>(nodes.x.size()), cell);
+  cells_.build(nodes.x, static_cast<LocalIndex>(nodes.x.size()), cell, /*enlarge=*/!share.comm);
   ExactSum stored;
   node_pairs_.resize(nodes.x.size(), 0);
   node_dv_.resize(nodes.x.size(), Vec3::Zero());

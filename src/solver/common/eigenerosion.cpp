@@ -55,7 +55,7 @@ LocalIndex Eigenerosion::apply(ParticleState& model, const Share& share) {
     cell_size = agreedCellSize(candidate_x_, count, own, cell_size, share);
   }
   if (count == 0) return 0;
-  cells_.build(candidate_x_, count, cell_size);
+  cells_.build(candidate_x_, count, cell_size, /*enlarge=*/!share.comm);
   // G_p is C_eps times a mass-weighted mean of W over the ball, so it cannot exceed C_eps times
   // the largest W in the cells the ball touches. Points whose bound stays below G_c (most of a
   // target away from the impact) skip the ball sum; the decisions are exactly the same.

@@ -55,7 +55,8 @@ double ownSum(const Share& share, LocalIndex n, F&& term) {
 
 // The cell size a cell list over a set of the whole run would take (CellList::build enlarges
 // `cell_size` by the set's extent and count): `x` holds this rank's positions of the set (own and
-// ghosts: all within the whole's bounds), `own` how many of them are its own.
+// ghosts: all within the whole's bounds), `own` how many of them are its own. A rank builds its
+// cell list with it as it is (CellList::build, enlarge false).
 inline double agreedCellSize(std::span<const Vec3> x, LocalIndex count, std::int64_t own, double cell_size,
                              const Share& share) {
   if (!share.comm) return cell_size;

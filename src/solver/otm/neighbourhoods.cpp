@@ -287,7 +287,7 @@ bool Neighbourhoods::update(Model& model, const Share& share, const Share& node_
     for (LocalIndex a = 0; a < nodes.size(); ++a) own += node_share.own(a) ? 1 : 0;
     node_cell = agreedCellSize(nodes.x, nodes.size(), own, node_cell, share);
   }
-  cells_.build(nodes.x, nodes.size(), node_cell);
+  cells_.build(nodes.x, nodes.size(), node_cell, /*enlarge=*/!share.comm);
   if (settings_.crack_visibility) buildOccluders(model, cell_size);
 
   const int threads = omp_get_max_threads();
