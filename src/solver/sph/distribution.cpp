@@ -4,13 +4,15 @@
 #include "particles/store_fields.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 namespace kessler::sph {
 
 namespace {
 
-// The particles with the integrator's arrays that travel with them.
+// The particles with the integrator's arrays that travel with them. Their positions for the
+// partition and the halo (`x`) are folded into the modelled side of the symmetry planes (Distribution).
 struct Travelling {
   Particles particles;
   std::vector<double>& volume_rate;
@@ -19,15 +21,21 @@ struct Travelling {
   std::vector<Index>& id;
   LocalIndex& owned;
 
-  Travelling(Model& model, Carried carried)
+  Travelling(Model& model, Carried carried, std::vector<Vec3>& folded, const std::vector<int>& axes)
       : particles(model),
         volume_rate(carried.volume_rate),
         lattice_reach(carried.lattice_reach),
-        x(model.points.x),
+        x(folded),
         id(model.points.id),
         owned(model.points.owned) {
-    volume_rate.resize(x.size(), 0.0);
-    lattice_reach.resize(x.size(), 0.0);
+    const std::vector<Vec3>& position = model.points.x;
+    volume_rate.resize(position.size(), 0.0);
+    lattice_reach.resize(position.size(), 0.0);
+    folded.resize(position.size());
+    for (std::size_t p = 0; p < position.size(); ++p) {
+      folded[p] = position[p];
+      for (const int a : axes) folded[p][a] = std::abs(folded[p][a]);
+    }
   }
 
   template <class Store, class Visit>
@@ -35,27 +43,29 @@ struct Travelling {
     Particles::fields(s.particles, visit);
     visit("volume_rate", s.volume_rate, 0.0);
     visit("lattice_reach", s.lattice_reach, 0.0);
+    visit("folded", s.x, Vec3::Zero().eval());
   }
 };
 
 }  // namespace
 
-Distribution::Distribution(const parallel::Communicator& comm) : comm_(comm), partition_(comm) {}
+Distribution::Distribution(const parallel::Communicator& comm, std::vector<int> symmetry_axes)
+    : comm_(comm), partition_(comm), axes_(std::move(symmetry_axes)) {}
 
 void Distribution::split(Model& model, Carried carried) {
   PointStore& points = model.points;
   KESSLER_VERIFY(points.owned == points.size(), "a model split twice (it holds ghosts)");
+  Travelling travelling(model, carried, folded_, axes_);
   // Each rank offers Zoltan a slice of the particles, so that every particle is cut once.
   const auto n = static_cast<std::size_t>(points.size());
   const auto ranks = static_cast<std::size_t>(comm_.size()), rank = static_cast<std::size_t>(comm_.rank());
   const std::size_t begin = n * rank / ranks, end = n * (rank + 1) / ranks;
   const std::vector<double> work(end - begin, 1.0);
-  partition_.balance(std::span<const Vec3>(points.x).subspan(begin, end - begin),
+  partition_.balance(std::span<const Vec3>(travelling.x).subspan(begin, end - begin),
                      std::span<const Index>(points.id).subspan(begin, end - begin), work);
   std::vector<LocalIndex> mine;
   for (std::size_t p = 0; p < n; ++p)
-    if (partition_.owner(points.x[p]) == comm_.rank()) mine.push_back(static_cast<LocalIndex>(p));
-  Travelling travelling(model, carried);
+    if (partition_.owner(travelling.x[p]) == comm_.rank()) mine.push_back(static_cast<LocalIndex>(p));
   keepFields(travelling, mine);
   own_ = static_cast<LocalIndex>(mine.size());
   ++layout_;
@@ -63,7 +73,7 @@ void Distribution::split(Model& model, Carried carried) {
 
 bool Distribution::rebuild(Model& model, Carried carried, std::span<const double> work,
                            const std::function<double(LocalIndex)>& reach) {
-  Travelling travelling(model, carried);
+  Travelling travelling(model, carried, folded_, axes_);
   const std::vector<LocalIndex> own = halo_.ownEntries(travelling);
   std::vector<double> own_work(own.size(), 1.0);
   if (work.size() == travelling.x.size())

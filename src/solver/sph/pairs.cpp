@@ -29,7 +29,7 @@ void Pairs::build(std::span<const Vec3> x, std::span<const double> h, LocalIndex
     return;
   }
   offset.assign(n + 1, 0);
-  cells_.build(x, count, cell_size);
+  cells_.build(x, count, cell_size, /*enlarge=*/!share.comm);
   // The image sets a particle near the planes sees: each non-empty subset of the axes whose planes
   // lie within its reach.
   std::uint8_t axes = 0;

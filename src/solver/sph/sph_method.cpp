@@ -13,15 +13,15 @@ Settings settingsFor(const Problem& problem) {
 
 namespace {
 
-std::unique_ptr<Distribution> distributionFor(const parallel::Communicator* ranks) {
-  return ranks && ranks->size() > 1 ? std::make_unique<Distribution>(*ranks) : nullptr;
+std::unique_ptr<Distribution> distributionFor(const parallel::Communicator* ranks, const Settings& settings) {
+  return ranks && ranks->size() > 1 ? std::make_unique<Distribution>(*ranks, settings.symmetry_axes) : nullptr;
 }
 
 }  // namespace
 
 SphMethod::SphMethod(Model model, const Settings& settings, const parallel::Communicator* ranks)
     : model_(std::move(model)),
-      distribution_(distributionFor(ranks)),
+      distribution_(distributionFor(ranks, settings)),
       integrator_(model_, settings, distribution_.get()),
       diagnostics_(settings.solver) {}
 
