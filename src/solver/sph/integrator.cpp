@@ -237,7 +237,7 @@ void Integrator::search() {
       correction_[i] = moment.inverse();
     } else {
       correction_[i].setIdentity();
-      uncorrected += points.debris(i) || !own.own(i) ? 0 : 1;
+      uncorrected += points.debris(i) ? 0 : 1;
     }
   }
   uncorrected_ = static_cast<LocalIndex>(own.sum(uncorrected));
