@@ -3,17 +3,13 @@
 // points and nodes must be bitwise what one process holds for them, and the energies and time steps
 // the same bits.
 #include "../unit/blocks.hpp"
-#include "material/impact_material.hpp"
-#include "material/library.hpp"
+#include "bitwise.hpp"
 #include "parallel/communicator.hpp"
 #include "solver/otm/distribution.hpp"
 #include "solver/otm/integrator.hpp"
 #include "solver/otm/morton_order.hpp"
 
 #include <gtest/gtest.h>
-
-#include <cstring>
-#include <unordered_map>
 
 namespace kessler::otm {
 namespace {
@@ -38,32 +34,9 @@ Model impact(const MaterialPtr& material, double speed, bool shield = false) {
   return model;
 }
 
-// Aluminium 6061-T6 with its strength, equation of state and fracture energy (material/library.hpp).
-MaterialPtr fracturing() {
-  return std::make_shared<ImpactMaterial>("al", library::find("Al6061-T6").parameters);
-}
-
-bool same(double a, double b) {
-  return std::memcmp(&a, &b, sizeof a) == 0;
-}
-template <class M>
-bool same(const M& a, const M& b) {
-  return std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<std::size_t>(a.size())) == 0;
-}
-
-// Entries of `mine` that are this rank's own and differ from the entry of `whole` with the same id.
-template <class Store, class Compare>
-int differing(const Store& mine, std::span<const std::uint8_t> ghost, const Store& whole, Compare&& compare) {
-  std::unordered_map<Index, LocalIndex> index;
-  for (LocalIndex i = 0; i < whole.owned; ++i) index[whole.id[i]] = i;
-  int differ = 0;
-  for (LocalIndex i = 0; i < mine.owned; ++i) {
-    if (!ghost.empty() && ghost[static_cast<std::size_t>(i)]) continue;
-    const auto found = index.find(mine.id[i]);
-    if (found == index.end() || !compare(i, found->second)) ++differ;
-  }
-  return differ;
-}
+using testing::differing;
+using testing::fracturing;
+using testing::same;
 
 // Steps one process and this rank's part side by side; returns the one process's model at the end.
 void compareEveryStep(const MaterialPtr& material, double speed, bool shield, int steps, Model& whole) {

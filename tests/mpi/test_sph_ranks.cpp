@@ -3,8 +3,7 @@
 // particles must be bitwise what one process holds for them, and the energies, time steps and
 // counts of distorted elements the same bits.
 #include "../unit/blocks.hpp"
-#include "material/impact_material.hpp"
-#include "material/library.hpp"
+#include "bitwise.hpp"
 #include "parallel/communicator.hpp"
 #include "solver/sph/distribution.hpp"
 #include "solver/sph/integrator.hpp"
@@ -12,9 +11,6 @@
 #include "solver/sph/sph_method.hpp"
 
 #include <gtest/gtest.h>
-
-#include <cstring>
-#include <unordered_map>
 
 namespace kessler::sph {
 namespace {
@@ -48,18 +44,9 @@ Problem impact(const MaterialPtr& material, const Vec3& velocity, bool shield) {
   return problem;
 }
 
-// Aluminium 6061-T6 with its strength, equation of state and fracture energy (material/library.hpp).
-MaterialPtr fracturing() {
-  return std::make_shared<ImpactMaterial>("al", library::find("Al6061-T6").parameters);
-}
-
-bool same(double a, double b) {
-  return std::memcmp(&a, &b, sizeof a) == 0;
-}
-template <class M>
-bool same(const M& a, const M& b) {
-  return std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<std::size_t>(a.size())) == 0;
-}
+using testing::differing;
+using testing::fracturing;
+using testing::same;
 
 struct Outcome {
   LocalIndex debris = 0, struck = 0, distorted = 0, loose = 0;
@@ -83,8 +70,6 @@ Outcome compareEveryStep(const Problem& problem, int steps) {
   EXPECT_LT(mine.points.owned, whole.points.owned) << "the halo holds every particle: the test would test nothing";
   EXPECT_GT(mine.points.owned, own) << "no ghosts";
 
-  std::unordered_map<Index, LocalIndex> index;
-  for (LocalIndex i = 0; i < whole.points.owned; ++i) index[whole.points.id[i]] = i;
   for (int step = 0; step <= steps; ++step) {
     if (step > 0) {
       try {
@@ -107,17 +92,11 @@ Outcome compareEveryStep(const Problem& problem, int steps) {
                          one.distorted() == part.distorted() && one.uncorrected() == part.uncorrected() &&
                          same(one.meanNeighbours(), part.meanNeighbours());
     const PointStore &p = mine.points, &q = whole.points;
-    int differ = 0;
-    for (LocalIndex i = 0; i < p.owned; ++i) {
-      if (!distribution.share().own(i)) continue;
-      const auto found = index.find(p.id[i]);
-      const LocalIndex j = found == index.end() ? -1 : found->second;
-      if (j < 0 ||
-          !(same(p.x[i], q.x[j]) && same(p.v[i], q.v[j]) && same(p.F[i], q.F[j]) && same(p.stress[i], q.stress[j]) &&
-            same(p.energy[i], q.energy[j]) && same(p.volume[i], q.volume[j]) && p.broken[i] == q.broken[j] &&
-            p.loose[i] == q.loose[j] && p.carrier[i] == q.carrier[j] && same(mine.viscosity[i], whole.viscosity[j])))
-        ++differ;
-    }
+    const int differ = differing(p, distribution.share().ghost, q, [&](LocalIndex i, LocalIndex j) {
+      return same(p.x[i], q.x[j]) && same(p.v[i], q.v[j]) && same(p.F[i], q.F[j]) && same(p.stress[i], q.stress[j]) &&
+             same(p.energy[i], q.energy[j]) && same(p.volume[i], q.volume[j]) && p.broken[i] == q.broken[j] &&
+             p.loose[i] == q.loose[j] && p.carrier[i] == q.carrier[j] && same(mine.viscosity[i], whole.viscosity[j]);
+    });
     if (world().any(!scalars || differ > 0)) {
       ADD_FAILURE() << "step " << step << ": scalars " << (scalars ? "agree" : "differ") << ", " << differ
                     << " own particles differ on rank " << world().rank();

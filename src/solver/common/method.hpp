@@ -19,6 +19,14 @@
 namespace kessler {
 
 // Where a method stands in time.
+// What a gathered method (Method::gathered) reports for the distributed run it stands for: rank 0's
+// timers, and the sizes and notes of the whole run.
+struct GatheredReport {
+  PhaseTimers timers;
+  std::vector<std::pair<std::string, double>> sizes;
+  std::vector<std::string> notes;
+};
+
 struct Clock {
   double time = 0.0;        // s
   long steps = 0;           // steps taken

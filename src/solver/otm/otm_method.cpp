@@ -157,7 +157,8 @@ std::unique_ptr<Method> OtmMethod::gathered(bool for_checkpoint) const {
   if (!whole) return nullptr;
   auto method = std::make_unique<OtmMethod>(std::move(*whole), integrator_.settings());
   method->integrator_.restore(integrator_.state());
-  method->report_ = Report{integrator_.timers(), std::move(sizes), tornNotes(static_cast<LocalIndex>(torn), mass)};
+  method->report_ =
+      GatheredReport{integrator_.timers(), std::move(sizes), tornNotes(static_cast<LocalIndex>(torn), mass)};
   return method;
 }
 

@@ -59,13 +59,6 @@ class OtmMethod final : public Method {
   // The histories' nodes in the store's current order (after the Morton sort or a restart).
   void locateHistories();
 
-  // What a gathered method reports for the distributed run it stands for (rank 0's timers, the
-  // ranks and their balance, the notes of every rank).
-  struct Report {
-    PhaseTimers timers;
-    std::vector<std::pair<std::string, double>> sizes;
-    std::vector<std::string> notes;
-  };
   // The sizes and notes of the whole run (collective in a distributed run).
   std::vector<std::pair<std::string, double>> rankSizes() const;
   std::vector<std::string> tornNotes(LocalIndex torn, double mass) const;
@@ -75,7 +68,7 @@ class OtmMethod final : public Method {
   Integrator integrator_;                       // holds a reference to model_
   Diagnostics diagnostics_;
   std::vector<History> histories_;
-  std::optional<Report> report_;  // a gathered method's
+  std::optional<GatheredReport> report_;  // a gathered method's
 };
 
 }  // namespace kessler::otm

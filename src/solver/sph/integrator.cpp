@@ -428,18 +428,16 @@ void Integrator::updateMaterials(double dt) {
     heatBodies(model_, body_points_, heat_);
     // The laws heat no debris (it has no thermal update): its share is kept as internal energy, so
     // that a debris cloud's collisions conserve energy.
-    bool athermal = false;
     for (LocalIndex p = 0; p < points.owned; ++p)
-      if (points.debris(p))
-        points.energy[p] += heat_[p] / points.mass[p];
-      else
-        athermal = athermal || !model_.materials[model_.bodies[points.body[p]].material]->takesHeat();
+      if (points.debris(p)) points.energy[p] += heat_[p] / points.mass[p];
     // A law without a thermal state takes none: its share is booked apart (an exact sum over own
     // particles and every rank).
-    if (share().any(athermal))
+    std::vector<std::uint8_t> athermal(model_.bodies.size());
+    for (std::size_t b = 0; b < athermal.size(); ++b)
+      athermal[b] = !model_.materials[model_.bodies[b].material]->takesHeat();
+    if (std::find(athermal.begin(), athermal.end(), 1) != athermal.end())  // the same on every rank
       dissipated_ += ownSum(share(), points.owned, [&](LocalIndex p) {
-        const bool takes = model_.materials[model_.bodies[points.body[p]].material]->takesHeat();
-        return points.debris(p) || takes ? 0.0 : heat_[p];
+        return points.debris(p) || !athermal[static_cast<std::size_t>(points.body[p])] ? 0.0 : heat_[p];
       });
   }
   // SPH's viscosity is its own: the laws' bulk viscosity stays off (limiter 1).

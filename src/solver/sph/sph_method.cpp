@@ -122,7 +122,7 @@ std::unique_ptr<Method> SphMethod::gathered(bool) const {
   if (!whole) return nullptr;
   auto method = std::make_unique<SphMethod>(std::move(*whole), integrator_.settings());
   method->integrator_.adopt(integrator_.clock(), integrator_.distorted(), integrator_.dissipated());
-  method->report_ = Report{integrator_.timers(), std::move(sizes), notes()};
+  method->report_ = GatheredReport{integrator_.timers(), std::move(sizes), notes()};
   return method;
 }
 

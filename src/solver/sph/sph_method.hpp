@@ -60,21 +60,14 @@ class SphMethod final : public Method {
   };
   // The histories' particles in the store's current order (a distributed run's move between ranks).
   void locateHistories();
-  // What a gathered method reports for the distributed run it stands for (rank 0's timers, the
-  // sizes and notes of the whole run).
-  struct Report {
-    PhaseTimers timers;
-    std::vector<std::pair<std::string, double>> sizes;
-    std::vector<std::string> notes;
-  };
 
   Model model_;
   std::unique_ptr<Distribution> distribution_;  // a distributed run's; before the integrator, which holds it
   Integrator integrator_;                       // holds a reference to model_
   PointDiagnostics diagnostics_;
   std::vector<History> histories_;
-  long located_ = -1;             // the distribution's layout the histories were located in
-  std::optional<Report> report_;  // a gathered method's
+  long located_ = -1;                     // the distribution's layout the histories were located in
+  std::optional<GatheredReport> report_;  // a gathered method's
 };
 
 }  // namespace kessler::sph
