@@ -159,37 +159,42 @@ bool indicesInRange(const TetMesh& mesh) {
   return true;
 }
 
-// Pairs of tets that share a face, each pair once with i < j. Faces are bucketed by their
-// smallest vertex with a counting sort, so the work is O(N); a bucket holds only the few dozen
-// faces around one vertex and is sorted on its own. A face is shared by at most two tets in a
-// valid (manifold) tetrahedral mesh.
-std::vector<std::array<LocalIndex, 2>> faceAdjacency(const TetMesh& mesh) {
+// Every face of the tets once, oriented out of its first tet, with the tet beyond it. Faces are
+// bucketed by their smallest vertex with a counting sort, so the work is O(N); a bucket holds only
+// the few dozen faces around one vertex and is sorted on its own. A face is shared by at most two
+// tets in a valid (manifold) tetrahedral mesh.
+std::vector<TetFace> tetFaces(const TetMesh& mesh) {
   struct Face {
     LocalIndex b = 0, c = 0;  // the two larger vertices; the smallest is the bucket
     LocalIndex tet = 0;
+    std::array<LocalIndex, 3> oriented{};
   };
-  const auto sortedFace = [&mesh](std::size_t e, int omit) {
-    std::array<LocalIndex, 3> f{};
-    int k = 0;
-    for (int i = 0; i < 4; ++i)
-      if (i != omit) f[k++] = mesh.tets[e][i];
+  // The face opposite vertex `omit` of a positively oriented tet, counter-clockwise seen from outside.
+  constexpr std::array<std::array<int, 3>, 4> outward = {{{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}}};
+  const auto faceOf = [&mesh, &outward](std::size_t e, int omit) {
+    const auto& t = mesh.tets[e];
+    const auto& o = outward[static_cast<std::size_t>(omit)];
+    return std::array<LocalIndex, 3>{t[o[0]], t[o[1]], t[o[2]]};
+  };
+  const auto sorted = [](std::array<LocalIndex, 3> f) {
     std::sort(f.begin(), f.end());
     return f;
   };
   std::vector<std::size_t> start(mesh.vertices.size() + 1, 0);
   for (std::size_t e = 0; e < mesh.tets.size(); ++e)
-    for (int omit = 0; omit < 4; ++omit) ++start[sortedFace(e, omit)[0] + 1];
+    for (int omit = 0; omit < 4; ++omit) ++start[sorted(faceOf(e, omit))[0] + 1];
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v) start[v + 1] += start[v];
   std::vector<Face> faces(start.back());
   std::vector<std::size_t> cursor(start.begin(), start.end() - 1);
   for (std::size_t e = 0; e < mesh.tets.size(); ++e) {
     for (int omit = 0; omit < 4; ++omit) {
-      const auto f = sortedFace(e, omit);
-      faces[cursor[f[0]]++] = Face{f[1], f[2], static_cast<LocalIndex>(e)};
+      const auto oriented = faceOf(e, omit);
+      const auto f = sorted(oriented);
+      faces[cursor[f[0]]++] = Face{f[1], f[2], static_cast<LocalIndex>(e), oriented};
     }
   }
-  std::vector<std::array<LocalIndex, 2>> pairs;
-  pairs.reserve(2 * mesh.tets.size());
+  std::vector<TetFace> out;
+  out.reserve(2 * mesh.tets.size() + mesh.tets.size() / 2);
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
     const auto first = faces.begin() + static_cast<std::ptrdiff_t>(start[v]);
     const auto last = faces.begin() + static_cast<std::ptrdiff_t>(start[v + 1]);
@@ -202,11 +207,11 @@ std::vector<std::array<LocalIndex, 2>> faceAdjacency(const TetMesh& mesh) {
         throw InputError(fmt::format("the face ({}, {}, {}) is shared by {} tetrahedra (a valid mesh has at most 2)", v,
                                      f->b, f->c, run - f));
       }
-      if (run - f == 2) pairs.push_back({f->tet, (f + 1)->tet});
+      out.push_back(TetFace{f->oriented, f->tet, run - f == 2 ? (f + 1)->tet : LocalIndex{-1}});
       f = run;
     }
   }
-  return pairs;
+  return out;
 }
 
 }  // namespace
@@ -261,7 +266,10 @@ Discretisation discretise(const TetMesh& mesh) {
     throw InputError(fmt::format("tetrahedron {} has non-positive volume {:.3g} m^3 (inverted or degenerate)",
                                  first_bad, d.volumes[first_bad]));
   }
-  d.adjacency = faceAdjacency(mesh);
+  // Pairs of tets that share a face, each pair once with i < j.
+  d.faces = tetFaces(mesh);
+  for (const TetFace& f : d.faces)
+    if (f.outer >= 0) d.adjacency.push_back({f.inner, f.outer});
   return d;
 }
 

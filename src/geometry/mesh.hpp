@@ -39,13 +39,21 @@ TetMesh meshShape(const MeshRequest& request);
 // OTM discretisation of a mesh: nodes = vertices; one material point per tet at its
 // barycentre with its volume, and a spacing h = mean edge length of the tet. `adjacency` lists
 // the pairs of points whose tets share a face, each pair once with i < j: the initial
-// connectivity of the material, from which analysis/ reconstructs fragments.
+// connectivity of the material, from which analysis/ reconstructs fragments. `faces` lists every
+// face of the tets once, for a sliding contact's surfaces (empty for a discretisation built
+// otherwise).
+struct TetFace {
+  std::array<LocalIndex, 3> nodes{};  // counter-clockwise seen from outside `inner`
+  LocalIndex inner = 0;               // the point (tet) whose face it is
+  LocalIndex outer = -1;              // the point (tet) beyond it; -1 on the mesh's boundary
+};
 struct Discretisation {
   std::vector<Vec3> nodes;
   std::vector<Vec3> points;
   std::vector<double> volumes;
   std::vector<double> spacings;
   std::vector<std::array<LocalIndex, 2>> adjacency;
+  std::vector<TetFace> faces;
 };
 
 Discretisation discretise(const TetMesh& mesh);
