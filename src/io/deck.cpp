@@ -61,11 +61,32 @@ void parseOtmKey(const std::string& key, const Field& value, OtmOptions& o) {
   if (key == "volume_averaging") o.volume_averaging = value.boolean();
 }
 
+ContactSettings parseContact(const Field& field) {
+  const MapField map = field.map({"type", "friction"});
+  ContactSettings contact;
+  if (std::optional<Field> type = map.find("type")) {
+    const std::string name = type->text();
+    if (name == "seizing")
+      contact.kind = ContactSettings::Kind::seizing;
+    else if (name == "sliding")
+      contact.kind = ContactSettings::Kind::sliding;
+    else
+      type->fail("must be seizing or sliding");
+  }
+  if (std::optional<Field> friction = map.find("friction")) {
+    contact.friction = friction->quantity(units::dimensionless);
+    if (!(contact.friction >= 0.0)) friction->fail("must not be negative");
+    if (contact.kind != ContactSettings::Kind::sliding)
+      friction->fail("applies to a sliding contact only (give type: sliding)");
+  }
+  return contact;
+}
+
 void parseSolver(const Field& field, RunConfig& config) {
   const std::vector<std::string_view> moved(otm_keys.begin(), otm_keys.end());
-  MapField map = field.map(
-      {"method", "end_time", "cfl", "max_steps", "min_dt_fraction", "max_energy_growth", "debris_contact", "otm"},
-      moved);
+  MapField map = field.map({"method", "end_time", "cfl", "max_steps", "min_dt_fraction", "max_energy_growth",
+                            "debris_contact", "contact", "otm"},
+                           moved);
   if (std::optional<Field> method = map.find("method")) {
     const std::vector<std::string>& known = methodNames();
     if (std::find(known.begin(), known.end(), method->text()) == known.end())
@@ -81,6 +102,7 @@ void parseSolver(const Field& field, RunConfig& config) {
   if (std::optional<Field> steps = map.find("max_steps"))
     s.max_steps = steps->integer(0, std::numeric_limits<long>::max());
   if (std::optional<Field> contact = map.find("debris_contact")) s.debris_contact = contact->boolean();
+  if (std::optional<Field> contact = map.find("contact")) s.contact = parseContact(*contact);
   if (std::optional<Field> fraction = map.find("min_dt_fraction")) {
     s.min_dt_fraction = fraction->quantity(units::dimensionless);
     if (!(s.min_dt_fraction >= 0.0 && s.min_dt_fraction < 1.0)) fraction->fail("must lie in [0, 1) (0: no check)");

@@ -201,6 +201,11 @@ std::string resolvedDeckText(const RunConfig& config) {
   scalar(out, "cfl", s.cfl, "");
   out << YAML::Key << "max_steps" << YAML::Value << s.max_steps << YAML::Comment("0: no limit");
   out << YAML::Key << "debris_contact" << YAML::Value << (s.debris_contact ? "true" : "false");
+  out << YAML::Key << "contact" << YAML::Value << YAML::BeginMap;
+  const bool sliding = s.contact.kind == ContactSettings::Kind::sliding;
+  out << YAML::Key << "type" << YAML::Value << (sliding ? "sliding" : "seizing");
+  if (sliding) scalar(out, "friction", s.contact.friction, "Coulomb");
+  out << YAML::EndMap;
   scalar(out, "min_dt_fraction", s.min_dt_fraction, "of the initial time step; 0: no check");
   scalar(out, "max_energy_growth", s.max_energy_growth, "relative to the initial total energy");
   const OtmOptions& o = config.otm;

@@ -4,6 +4,16 @@
 // are built from them by the factory (solver/methods.cpp). The solver never sees the deck itself.
 namespace kessler {
 
+// How two bodies meet (docs/theory.md §3 and §11; deck `solver.contact`).
+struct ContactSettings {
+  enum class Kind {
+    seizing,  // a body's points take the other body's carriers once within reach: the two stick
+    sliding,  // a master surface of each body; the other's carriers are pushed back onto it and slide
+  };
+  Kind kind = Kind::seizing;
+  double friction = 0.0;  // Coulomb coefficient of a sliding contact
+};
+
 // What every method reads.
 struct SolverSettings {
   double end_time = 0.0;  // s
@@ -18,6 +28,7 @@ struct SolverSettings {
   // before it was released) strikes it as matter. Without it, debris passes through every body (a
   // Whipple shield's rear wall would never be hit).
   bool debris_contact = true;
+  ContactSettings contact;
   // Not deck keys (the theory fixes them; studies vary them):
   // eigenerosion (Pandolfi & Ortiz 2012; docs/theory.md §8): the radius of the ball B_eps as a
   // multiple of the point spacing h, also the ball over which released debris takes its velocity.

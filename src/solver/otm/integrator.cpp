@@ -28,18 +28,22 @@ Integrator::Integrator(Model& model, const Settings& settings, Distribution* dis
       distribution_(distribution),
       neighbourhoods_(settings),
       erosion_(settings.erosion_radius),
-      release_(settings.erosion_radius) {
+      release_(settings.erosion_radius),
+      sliding_(settings.contact.friction) {
   KESSLER_VERIFY(settings.cfl > 0.0 && settings.cfl <= 1.0, "cfl must lie in (0, 1], got {}", settings.cfl);
   KESSLER_VERIFY(settings.end_time > 0.0, "end_time must be positive, got {}", settings.end_time);
   // Its occluders are found over the points a rank holds, which do not reach as far as its searches.
   if (distribution && settings.crack_visibility)
     throw Error("otm.crack_visibility does not yet run on several ranks (docs/parallel.md); run on one");
+  if (distribution && sliding())
+    throw Error("solver.contact: a sliding contact does not yet run on several ranks (docs/parallel.md); run on one");
   std::vector<double> limits;
   for (const BodyInfo& body : model_.bodies) limits.push_back(model_.materials[body.material]->tensileLimit());
   patch_.setTensileLimits(std::move(limits));
 }
 
 void Integrator::initialise() {
+  requireFacesInOrder();
   if (distribution_) distribution_->split(model_);
   findBodyRanges();
   for (std::size_t b = 0; b < model_.bodies.size(); ++b)
@@ -140,6 +144,18 @@ void Integrator::requireContactReach(double dt_kick) const {
                     contact_reach_, speed, dt_kick));
 }
 
+void Integrator::requireFacesInOrder() const {
+  if (!sliding()) return;
+  // One process holds the points and nodes in id order (orderForLocality, and a checkpoint keeps it):
+  // the faces name them by id.
+  for (LocalIndex a = 0; a < model_.nodes.size(); ++a)
+    KESSLER_VERIFY(model_.nodes.id[a] == a, "sliding contact: node {} has id {}", a, model_.nodes.id[a]);
+  for (LocalIndex p = 0; p < model_.points.size(); ++p)
+    KESSLER_VERIFY(model_.points.id[p] == p, "sliding contact: point {} has id {}", p, model_.points.id[p]);
+  if (model_.faces.empty() && model_.points.size() > 0)
+    throw Error("solver.contact: a sliding contact needs the bodies' faces, which this model was built without");
+}
+
 void Integrator::restore(const IntegratorState& state) {
   time_ = state.time;
   dt_last_ = state.dt_last;
@@ -147,6 +163,7 @@ void Integrator::restore(const IntegratorState& state) {
   dt_initial_ = state.dt_initial;
   steps_ = state.steps;
   stabilisation_energy_ = state.stabilisation_energy;
+  requireFacesInOrder();
   if (distribution_)
     distributeRestored();
   else
@@ -319,8 +336,57 @@ void Integrator::updateNodes(double dt, double dt_average) {
     increment_[a].dv = v_new - v_old;
     increment_[a].du = dt * v_new;
     nodes.v[a] = v_new;
-    nodes.x[a] += increment_[a].du;
   }
+  if (sliding()) slide();
+#pragma omp parallel for schedule(static)
+  for (LocalIndex a = 0; a < nodes.owned; ++a) nodes.x[a] += increment_[a].du;
+}
+
+void Integrator::buildSurface() {
+  const PointStore& points = model_.points;
+  const NodeStore& nodes = model_.nodes;
+  surface_.triangles.clear();
+  surface_.slaves.clear();
+  // Intact material only: with failed material (compression only) as a surface too, the contact
+  // drove sphere-plate's shock nearer the Hugoniot but cylinder-oblique's energy ran away
+  // (docs/validation.md, "Sliding contact").
+  const auto intact = [&](Index p) { return p >= 0 && !points.broken[static_cast<std::size_t>(p)]; };
+  for (const ContactFace& f : model_.faces) {
+    const bool in = intact(f.inner), out = intact(f.outer);
+    if (in == out) continue;
+    std::array<LocalIndex, 3> t{static_cast<LocalIndex>(f.nodes[0]), static_cast<LocalIndex>(f.nodes[1]),
+                                static_cast<LocalIndex>(f.nodes[2])};
+    if (out) std::swap(t[1], t[2]);  // seen from the outer point's side
+    surface_.triangles.push_back(t);
+    for (const LocalIndex a : t) surface_.slaves.push_back(a);
+  }
+  std::sort(surface_.slaves.begin(), surface_.slaves.end());
+  surface_.slaves.erase(std::unique(surface_.slaves.begin(), surface_.slaves.end()), surface_.slaves.end());
+  KESSLER_VERIFY(surface_.slaves.empty() || surface_.slaves.back() < nodes.size(), "a contact face names node {} of {}",
+                 surface_.slaves.back(), nodes.size());
+}
+
+void Integrator::slide() {
+  buildSurface();
+  std::vector<Vec3> du(increment_.size());
+  for (std::size_t a = 0; a < du.size(); ++a) du[a] = increment_[a].du;
+  NodeStore& nodes = model_.nodes;
+  const std::vector<Vec3> v_before(nodes.v.begin(), nodes.v.begin() + nodes.owned);
+  contact_heat_.assign(du.size(), 0.0);
+  sliding_report_ = sliding_.apply(
+      surface_, SlidingCarriers{nodes.x, du, nodes.v, nodes.mass, nodes.body, nodes.constrained, contact_heat_},
+      model_.bodies.size());
+  for (std::size_t a = 0; a < du.size(); ++a) {
+    increment_[a].du = du[a];
+    increment_[a].dv += nodes.v[a] - v_before[a];
+  }
+  // The kinetic energy the contact took is booked apart (Energies::stabilisation), not given to the
+  // material: all of it in the one layer of points at the interface (where a shock would spread it
+  // over the material it crosses) made them hot enough to collapse the time step (docs/theory.md §11).
+  ExactSum taken;
+  for (const double q : contact_heat_) taken.add(q);
+  stabilisation_energy_ += taken.value();
+  recordContacts(model_, sliding_report_.touching);
 }
 
 // Material points follow the nodes (docs/theory.md §4 step 3), written with displacements so that

@@ -8,6 +8,7 @@
 #include "solver/common/eigenerosion.hpp"
 #include "solver/common/energies.hpp"
 #include "solver/common/release.hpp"
+#include "solver/common/sliding_contact.hpp"
 #include "solver/common/stable_step.hpp"
 #include "solver/otm/distribution.hpp"
 #include "solver/otm/integrator_assembly.hpp"
@@ -81,6 +82,8 @@ class Integrator {
   double tornMass() const { return neighbourhoods_.tornMass(); }
   // A distributed run: searches done again with a wider halo, and the search radius the last halo held.
   long searchesRepeated() const { return searches_repeated_; }
+  // A sliding contact: the last step's contacts and the deepest slave left below a master surface.
+  const SlidingReport& slidingReport() const { return sliding_report_; }
   double haloSupport() const { return halo_support_; }
   double lastStep() const { return dt_last_; }
   double nextStep() const { return dt_next_; }
@@ -94,6 +97,12 @@ class Integrator {
   void advance(double dt);  // the body of step()
   void assembleNodes();
   void updateNodes(double dt, double dt_average);
+  // A sliding contact's surfaces now (Model::faces whose one side is intact), and its corrections
+  // of the step's node displacements and velocities (solver/common/sliding_contact.hpp).
+  void buildSurface();
+  void slide();
+  bool sliding() const { return settings_.contact.kind == ContactSettings::Kind::sliding; }
+  void requireFacesInOrder() const;
   void updatePoints();
   void initialVolumeRates();
   void updateMaterials(double dt);
@@ -128,6 +137,10 @@ class Integrator {
   Eigenerosion erosion_;
   DebrisRelease release_;
   DebrisContact contact_;
+  SlidingContact sliding_;
+  ContactSurface surface_;
+  SlidingReport sliding_report_;      // the last step's
+  std::vector<double> contact_heat_;  // per node: the kinetic energy the step's sliding contact took, J
   std::vector<NodeIncrement> increment_;
   std::vector<double> j_point_;  // det(dF) per point (after averaging)
   // J per point, heat to add: before the material update the kinetic energy the step's transfer took,

@@ -191,6 +191,14 @@ void OtmMethod::save(StateWriter& out) const {
   out.array("/connectivity/node", conn.node);
   out.array("/connectivity/N", conn.N);
   out.array("/connectivity/dN", conn.dN);
+  if (!model_.faces.empty()) {
+    std::vector<std::int64_t> faces;
+    faces.reserve(5 * model_.faces.size());
+    for (const ContactFace& f : model_.faces)
+      faces.insert(faces.end(), {f.nodes[0], f.nodes[1], f.nodes[2], f.inner, f.outer});
+    out.group("/contact");
+    out.array("/contact/faces", faces);
+  }
 }
 
 void OtmMethod::load(const StateReader& in) {
@@ -221,6 +229,23 @@ void OtmMethod::load(const StateReader& in) {
   for (LocalIndex a : conn.node)
     if (a < 0 || a >= nodes.size()) in.fail(fmt::format("use the connectivity: node {} does not exist", a));
   if (!distribution_) conn.buildTranspose(nodes.size());  // a distributed run's, once it holds its part
+  if (integrator_.settings().contact.kind == ContactSettings::Kind::sliding) {
+    std::vector<std::int64_t> faces;
+    const std::size_t values = in.length("/contact/faces");
+    if (values % 5 != 0) in.fail("use the contact faces: their count is not a multiple of 5");
+    in.array("/contact/faces", faces, values);
+    model_.faces.resize(values / 5);
+    for (std::size_t f = 0; f < model_.faces.size(); ++f) {
+      const std::int64_t* v = faces.data() + 5 * f;
+      for (int i = 0; i < 3; ++i)
+        if (v[i] < 0 || v[i] >= nodes.size())
+          in.fail(fmt::format("use contact face {}: node {} does not exist", f, v[i]));
+      for (int i = 3; i < 5; ++i)
+        if (v[i] < -1 || v[i] >= points.size() || (i == 3 && v[i] < 0))
+          in.fail(fmt::format("use contact face {}: point {} does not exist", f, v[i]));
+      model_.faces[f] = ContactFace{{v[0], v[1], v[2]}, v[3], v[4]};
+    }
+  }
 
   integrator_.restore({in.doubleScalar("integrator_time"), in.doubleScalar("integrator_dt_last"),
                        in.doubleScalar("integrator_dt_next"), in.doubleScalar("integrator_dt_initial"),

@@ -5,12 +5,13 @@
 #include "geometry/structured_mesh.hpp"
 #include "solver/otm/morton_order.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace kessler::otm {
 
 int addBody(Model& model, const std::string& name, const MaterialPtr& material, const geometry::Discretisation& mesh,
-            const Vec3& velocity) {
+            const Vec3& velocity, bool faces) {
   KESSLER_VERIFY(material != nullptr, "body '{}' has no material", name);
   const int body = static_cast<int>(model.bodies.size());
   int material_index = -1;
@@ -57,6 +58,17 @@ int addBody(Model& model, const std::string& name, const MaterialPtr& material, 
     const auto a = static_cast<std::size_t>(i), b = static_cast<std::size_t>(j);
     model.adjacency_length0.push_back((mesh.points[b] - mesh.points[a]).norm());
   }
+  if (faces) {
+    KESSLER_VERIFY(!mesh.faces.empty() || mesh.points.empty(),
+                   "body '{}': a sliding contact needs its tetrahedra's faces", name);
+    const auto node_id = [&](LocalIndex i) { return nodes.id[node_begin + static_cast<std::size_t>(i)]; };
+    const auto point_id = [&](LocalIndex i) {
+      return i < 0 ? Index{-1} : points.id[point_begin + static_cast<std::size_t>(i)];
+    };
+    for (const geometry::TetFace& f : mesh.faces)
+      model.faces.push_back(
+          {{node_id(f.nodes[0]), node_id(f.nodes[1]), node_id(f.nodes[2])}, point_id(f.inner), point_id(f.outer)});
+  }
   model.bodies.push_back(BodyInfo{name, material_index});
   return body;
 }
@@ -82,8 +94,52 @@ LocalIndex constrainPlane(Model& model, int axis, double offset, double toleranc
   return static_cast<LocalIndex>(on.size());
 }
 
+void dropHeldFaces(Model& model) {
+  // A boundary face whose nodes are all held along one axis, on one plane normal to it, and not all
+  // held in every direction (a symmetry plane, a roller): the body goes on beyond it. A body held
+  // whole (a rigid wall) keeps its faces.
+  const NodeStore& nodes = model.nodes;
+  const auto held = [&](const ContactFace& f) {
+    if (f.outer >= 0) return false;
+    bool rigid = true;
+    for (const Index a : f.nodes) rigid = rigid && (nodes.constrained[static_cast<std::size_t>(a)] & 7u) == 7u;
+    if (rigid) return false;
+    for (int axis = 0; axis < 3; ++axis) {
+      bool all = true;
+      for (const Index a : f.nodes) all = all && ((nodes.constrained[static_cast<std::size_t>(a)] >> axis) & 1u) != 0;
+      if (!all) continue;
+      const double x0 = nodes.x[static_cast<std::size_t>(f.nodes[0])][axis];
+      const double size =
+          (nodes.x[static_cast<std::size_t>(f.nodes[1])] - nodes.x[static_cast<std::size_t>(f.nodes[0])]).norm();
+      bool flat = true;
+      for (const Index a : f.nodes)
+        flat = flat && std::abs(nodes.x[static_cast<std::size_t>(a)][axis] - x0) <= 1e-6 * size;
+      if (flat) return true;
+    }
+    return false;
+  };
+  model.faces.erase(std::remove_if(model.faces.begin(), model.faces.end(), held), model.faces.end());
+}
+
+void orderForLocality(Model& model) {
+  sortForLocality(model);
+  // Before the numbering, each entry's id is still its index at creation.
+  std::vector<Index> node_now(model.nodes.id.size()), point_now(model.points.id.size());
+  for (std::size_t a = 0; a < node_now.size(); ++a)
+    node_now[static_cast<std::size_t>(model.nodes.id[a])] = static_cast<Index>(a);
+  for (std::size_t p = 0; p < point_now.size(); ++p)
+    point_now[static_cast<std::size_t>(model.points.id[p])] = static_cast<Index>(p);
+  for (ContactFace& f : model.faces) {
+    for (Index& a : f.nodes) a = node_now[static_cast<std::size_t>(a)];
+    f.inner = point_now[static_cast<std::size_t>(f.inner)];
+    if (f.outer >= 0) f.outer = point_now[static_cast<std::size_t>(f.outer)];
+  }
+  numberInOrder(model);
+}
+
 Model buildModel(const Problem& problem) {
   Model model;
+  const bool faces = problem.settings.solver.contact.kind == ContactSettings::Kind::sliding;
   for (const BodySetup& setup : problem.bodies) {
     const LocalIndex first_node = model.nodes.size(), first_point = model.points.size();
     const auto* request = std::get_if<geometry::MeshRequest>(&setup.mesh);
@@ -98,7 +154,7 @@ Model buildModel(const Problem& problem) {
     }
     const geometry::Discretisation& disc =
         request != nullptr || structured != nullptr ? meshed : std::get<geometry::Discretisation>(setup.mesh);
-    const int body = addBody(model, setup.name, setup.material, disc, setup.velocity);
+    const int body = addBody(model, setup.name, setup.material, disc, setup.velocity, faces);
     if (setup.velocity_field) {
       for (LocalIndex a = first_node; a < model.nodes.size(); ++a)
         model.nodes.v[a] = setup.velocity_field(model.nodes.x[a]);
@@ -116,10 +172,10 @@ Model buildModel(const Problem& problem) {
   for (const PlaneConstraint& plane : problem.planes)
     constrainPlane(model, plane.axis, plane.offset, plane.tolerance, plane.velocity, plane.body);
   if (problem.prepare) problem.prepare(model);
+  dropHeldFaces(model);
   // Points and nodes in Morton order, numbered in it, once, before anything refers to their
   // indices or ids (the first output and checkpoint already see this order; a restart continues it).
-  sortForLocality(model);
-  numberInOrder(model);
+  orderForLocality(model);
   return model;
 }
 

@@ -15,10 +15,18 @@ namespace kessler::otm {
 // problem's `prepare`.
 Model buildModel(const Problem& problem);
 
-// Appends one body from an existing discretisation (used by verification problems).
-// Returns the body index.
+// Appends one body from an existing discretisation (used by verification problems), with its
+// faces (Model::faces) if `faces`. Returns the body index.
 int addBody(Model& model, const std::string& name, const MaterialPtr& material, const geometry::Discretisation& mesh,
-            const Vec3& velocity);
+            const Vec3& velocity, bool faces = false);
+
+// Drops from Model::faces those on the body's boundary that lie on a plane their nodes are held
+// normal to (a symmetry plane, a roller; not a face held in every direction): no contact surface.
+void dropHeldFaces(Model& model);
+
+// Puts the points and nodes in Morton order and numbers them in it (ids = indices), the faces'
+// ids with them.
+void orderForLocality(Model& model);
 
 // Prescribes velocity component `axis` of a node (0 for a fixed or symmetry constraint).
 void constrainNode(Model& model, LocalIndex node, int axis, double velocity = 0.0);

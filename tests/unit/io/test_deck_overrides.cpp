@@ -53,7 +53,7 @@ TEST(DeckOverrides, TheLastOneWins) {
 TEST(DeckOverrides, UnknownKeysAreErrorsFromTheCommandLine) {
   EXPECT_EQ(errorOf({"solver.endtime=5 us"}),
             "command line (--set solver.endtime=5 us): solver.endtime: unknown key (allowed: method, "
-            "end_time, cfl, max_steps, min_dt_fraction, max_energy_growth, debris_contact, otm)");
+            "end_time, cfl, max_steps, min_dt_fraction, max_energy_growth, debris_contact, contact, otm)");
   EXPECT_EQ(errorOf({"outptu.dir=x"}).rfind("command line (--set outptu.dir=x): outptu: unknown key", 0), 0u);
   EXPECT_EQ(errorOf({"bodies.0.shape.cone.radius=1 mm"})
                 .rfind("command line (--set bodies.0.shape.cone.radius=1 mm): bodies[0].shape", 0),

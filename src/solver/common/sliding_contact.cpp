@@ -1,0 +1,208 @@
+#include "solver/common/sliding_contact.hpp"
+
+#include "search/cell_list.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace kessler {
+
+namespace {
+
+// A master triangle near a slave, at the step's positions.
+struct Near {
+  LocalIndex triangle = 0;
+  Vec3 normal = Vec3::Zero();      // unit, out of the master body
+  double depth = 0.0;              // the slave's height above the triangle's plane (< 0: below)
+  double longest = 0.0;            // the triangle's longest edge
+  std::array<double, 3> weight{};  // barycentric coordinates of the slave's projection
+  double distance = 0.0;           // from the slave to the nearest point of the triangle
+  bool over = false;               // the projection lies on the triangle
+};
+
+double segmentDistance(const Vec3& q, const Vec3& a, const Vec3& b) {
+  const Vec3 e = b - a;
+  const double t = std::clamp((q - a).dot(e) / e.squaredNorm(), 0.0, 1.0);
+  return (q - a - t * e).norm();
+}
+
+// The part of a change that a carrier's boundary leaves it (bit i of `held`: component i is held).
+Vec3 freePart(Vec3 change, std::uint8_t held) {
+  for (int axis = 0; axis < 3; ++axis)
+    if ((held >> axis) & 1u) change[axis] = 0.0;
+  return change;
+}
+
+// 1 / mass as the contact sees a carrier: a carrier held in every component does not move.
+double inverseMass(const SlidingCarriers& c, LocalIndex a) {
+  return (c.constrained[a] & 7u) == 7u ? 0.0 : 1.0 / c.mass[a];
+}
+
+}  // namespace
+
+SlidingReport SlidingContact::apply(const ContactSurface& surface, const SlidingCarriers& c, std::size_t bodies) const {
+  SlidingReport report;
+  report.touching.assign(bodies <= 64 ? bodies : 0, 0);
+  const auto& triangles = surface.triangles;
+  if (triangles.empty() || surface.slaves.empty()) return report;
+  const auto y = [&c](LocalIndex a) -> Vec3 { return c.x[a] + c.du[a]; };
+
+  // The triangles binned by their centroids at the step's start positions plus displacement; every
+  // point of a triangle lies within its longest edge of its centroid.
+  std::vector<Vec3> centre(triangles.size());
+  double longest = 0.0;
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    const auto& v = triangles[t];
+    const Vec3 a = y(v[0]), b = y(v[1]), d = y(v[2]);
+    centre[t] = (a + b + d) / 3.0;
+    longest = std::max({longest, (b - a).norm(), (d - b).norm(), (a - d).norm()});
+  }
+  if (!(longest > 0.0)) return report;
+  CellList cells;
+  cells.build(centre, static_cast<LocalIndex>(centre.size()), longest);
+  // A face contact lies within the triangle's longest edge of the slave; an edge contact's vertex
+  // within the longest edge, and the triangles around it within two of their centroids.
+  const double reach = 2.0 * longest;
+
+  std::vector<Near> near;
+  for (int visit = 0; visit < visits; ++visit) {
+    const bool measure_only = visit == visits - 1;
+    for (const LocalIndex s : surface.slaves) {
+      if (!(c.mass[s] > 0.0)) continue;
+      const Vec3 ys = y(s);
+      near.clear();
+      cells.forEachWithin(ys, reach, [&](LocalIndex t, double) {
+        const auto& v = triangles[static_cast<std::size_t>(t)];
+        if (c.body[v[0]] == c.body[s]) return;
+        for (const LocalIndex a : v)
+          if (!(c.mass[a] > 0.0)) return;
+        const Vec3 a = y(v[0]), b = y(v[1]), d = y(v[2]);
+        Vec3 n = (b - a).cross(d - a);
+        const double twice_area = n.norm();
+        if (!(twice_area > 0.0)) return;
+        n /= twice_area;
+        Near item;
+        item.triangle = t;
+        item.normal = n;
+        item.depth = (ys - a).dot(n);
+        item.longest = std::max({(b - a).norm(), (d - b).norm(), (a - d).norm()});
+        const Vec3 p = ys - item.depth * n;
+        item.weight = {(b - p).cross(d - p).dot(n) / twice_area, (d - p).cross(a - p).dot(n) / twice_area,
+                       (a - p).cross(b - p).dot(n) / twice_area};
+        item.over = *std::min_element(item.weight.begin(), item.weight.end()) >= -1e-12;
+        item.distance =
+            item.over ? std::abs(item.depth)
+                      : std::min({segmentDistance(ys, a, b), segmentDistance(ys, b, d), segmentDistance(ys, d, a)});
+        near.push_back(item);
+      });
+      if (near.empty()) continue;
+
+      // The nearest master triangle decides (on ties, one the slave lies over): a face contact if the
+      // slave is over it and below its plane, by less than its longest edge.
+      const Near* closest = &near.front();
+      for (const Near& item : near)
+        if (item.distance < closest->distance || (item.distance == closest->distance && item.over && !closest->over))
+          closest = &item;
+      const Near* face =
+          closest->over && closest->depth < 0.0 && closest->depth >= -closest->longest ? closest : nullptr;
+      if (measure_only) {
+        if (face != nullptr) report.deepest_remaining = std::max(report.deepest_remaining, -face->depth);
+        continue;
+      }
+      const double inverse_s = inverseMass(c, s);
+      if (face != nullptr) {
+        const auto& v = triangles[static_cast<std::size_t>(face->triangle)];
+        const Vec3& n = face->normal;
+        double w = inverse_s;
+        for (int i = 0; i < 3; ++i) w += face->weight[i] * face->weight[i] * inverseMass(c, v[i]);
+        if (!(w > 0.0)) continue;  // slave and triangle all held
+        // Back onto the triangle, the centre of mass kept.
+        const double P = -face->depth / w;
+        c.du[s] += freePart(P * inverse_s * n, c.constrained[s]);
+        for (int i = 0; i < 3; ++i)
+          c.du[v[i]] -= freePart(face->weight[i] * P * inverseMass(c, v[i]) * n, c.constrained[v[i]]);
+        // Normal velocities equal where they approach; then Coulomb friction.
+        const auto relative = [&]() {
+          Vec3 at = Vec3::Zero();
+          for (int i = 0; i < 3; ++i) at += face->weight[i] * c.v[v[i]];
+          return Vec3(c.v[s] - at);
+        };
+        const auto push = [&](const Vec3& impulse) {
+          c.v[s] += freePart(inverse_s * impulse, c.constrained[s]);
+          for (int i = 0; i < 3; ++i)
+            c.v[v[i]] -= freePart(face->weight[i] * inverseMass(c, v[i]) * impulse, c.constrained[v[i]]);
+        };
+        // The kinetic energy an exchange took that brought the relative speed from `before` to `after`
+        // along its direction: half to the slave, half to the vertices.
+        const auto heat = [&](double before, double after) {
+          const double q = 0.5 * (before * before - after * after) / w;
+          c.heat[s] += 0.5 * q;
+          for (int i = 0; i < 3; ++i) c.heat[v[i]] += 0.5 * face->weight[i] * q;
+        };
+        const double approach = relative().dot(n);
+        if (approach < 0.0) {
+          const double J = -approach / w;
+          push(J * n);
+          heat(approach, 0.0);
+          if (friction_ > 0.0) {
+            const Vec3 r = relative();
+            const Vec3 slip = r - r.dot(n) * n;
+            const double speed = slip.norm();
+            if (speed > 0.0) {
+              const double Jt = std::min(friction_ * J, speed / w);
+              push(-Jt / speed * slip);
+              heat(speed, speed - Jt * w);
+            }
+          }
+        }
+        ++report.face_contacts;
+        if (!report.touching.empty()) {
+          const auto mine = static_cast<std::size_t>(c.body[s]);
+          report.touching[mine] |= std::uint64_t{1} << c.body[v[0]];
+        }
+        continue;
+      }
+
+      // An edge or vertex contact: inside every triangle around the nearest master vertex.
+      if (closest->over) continue;
+      LocalIndex m = -1;
+      double nearest = std::numeric_limits<double>::infinity();
+      for (const Near& item : near) {
+        if (!(item.depth < 0.0)) continue;
+        for (const LocalIndex a : triangles[static_cast<std::size_t>(item.triangle)]) {
+          const double r = (y(a) - ys).norm();
+          if (r < nearest) nearest = r, m = a;
+        }
+      }
+      if (m < 0 || nearest > longest) continue;
+      Vec3 normal = Vec3::Zero();
+      bool inside = true;
+      for (const Near& item : near) {
+        const auto& v = triangles[static_cast<std::size_t>(item.triangle)];
+        if (std::find(v.begin(), v.end(), m) == v.end()) continue;
+        inside = inside && item.depth < 0.0;
+        normal += item.normal;
+      }
+      if (!inside || !(normal.norm() > 0.0)) continue;
+      normal.normalize();
+      const double vs = c.v[s].dot(normal), vm = c.v[m].dot(normal);
+      if (!(vs - vm < 0.0)) continue;
+      const double inverse_m = inverseMass(c, m);
+      if (!(inverse_s + inverse_m > 0.0)) continue;
+      // The momentum-weighted mean, a held side counting as infinitely heavy.
+      const double mean = (inverse_m * vs + inverse_s * vm) / (inverse_s + inverse_m);
+      c.v[s] += freePart((mean - vs) * normal, c.constrained[s]);
+      c.v[m] += freePart((mean - vm) * normal, c.constrained[m]);
+      const double q = 0.5 * (vs - vm) * (vs - vm) / (inverse_s + inverse_m);
+      c.heat[s] += 0.5 * q;
+      c.heat[m] += 0.5 * q;
+      ++report.edge_contacts;
+      if (!report.touching.empty())
+        report.touching[static_cast<std::size_t>(c.body[s])] |= std::uint64_t{1} << c.body[m];
+    }
+  }
+  return report;
+}
+
+}  // namespace kessler
