@@ -7,7 +7,7 @@
 // body: they stick. SeizingProbe applies that rule to the candidates a search found for one point
 // and records which bodies touched (BodyInfo::touched), which debris contact needs.
 //
-// A sliding contact (a master surface, the slave pushed back along its normal) is the next kind.
+// The other kind, a sliding contact on the bodies' surfaces, is solver/common/sliding_contact.hpp.
 #include "parallel/communicator.hpp"
 #include "solver/common/particle_state.hpp"
 

@@ -5,8 +5,8 @@
 // Each body's surface is a set of triangles whose vertices are its carriers (OTM: its nodes). In a
 // step, every surface carrier of one body (a slave) is tested against the triangles of the other
 // bodies (the masters), at the positions the step would give them, y = x + du:
-// - A slave that has crossed a master triangle (inside its plane by less than the triangle's longest
-//   edge, its projection within the triangle) is put back onto the triangle along the triangle's
+// - A slave that has crossed its nearest master triangle (inside its plane by less than the
+//   triangle's longest edge, its projection within the triangle) is put back onto the triangle along the triangle's
 //   normal n: the slave moves by P n / m_s and each vertex i by -N_i P n / m_i (N_i the barycentric
 //   coordinates of the projection), with P = -d / (1/m_s + sum_i N_i^2 / m_i) for the depth d < 0,
 //   which closes the gap and leaves the centre of mass where it was.
@@ -17,8 +17,8 @@
 // - Coulomb friction: the relative tangential velocity is reduced by an impulse of at most
 //   `friction` times J, at most enough to stop the sliding; without friction it is kept.
 // - The kinetic energy these exchanges take (1/2 J^2 w for the normal one, w = 1/m_s + sum N_i^2/m_i,
-//   and the like for friction) is heat, half the slave's and half the vertices' (by N_i): the
-//   material on both sides of the contact takes what the inelastic contact took from the motion.
+//   and the like for friction) is returned per carrier, half the slave's and half the vertices' (by
+//   N_i); the method decides where it goes (OTM books it apart: docs/theory.md §11).
 // - A slave inside the body beyond an edge or vertex (below the plane of every triangle around its
 //   nearest master vertex, its projection on none of them) exchanges its normal velocity with that
 //   vertex by the momentum-weighted mean, along the mean of those triangles' normals.
@@ -42,8 +42,8 @@ struct ContactSurface {
 
 // The carriers a sliding contact moves: positions at the start of the step, the step's displacement
 // and the velocity (both changed), masses, bodies, the components held by a boundary (bit i:
-// component i), which the contact leaves alone, and the heat each carrier's material is to take
-// (added to, J).
+// component i), which the contact leaves alone, and the kinetic energy the contact took, per
+// carrier (added to, J).
 struct SlidingCarriers {
   std::span<const Vec3> x;
   std::span<Vec3> du;
