@@ -76,8 +76,7 @@ ContactSettings parseContact(const Field& field) {
   if (std::optional<Field> friction = map.find("friction")) {
     contact.friction = friction->quantity(units::dimensionless);
     if (!(contact.friction >= 0.0)) friction->fail("must not be negative");
-    if (contact.kind != ContactSettings::Kind::sliding)
-      friction->fail("applies to a sliding contact only (give type: sliding)");
+    if (!contact.sliding()) friction->fail("applies to a sliding contact only (give type: sliding)");
   }
   return contact;
 }

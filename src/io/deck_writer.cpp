@@ -202,7 +202,7 @@ std::string resolvedDeckText(const RunConfig& config) {
   out << YAML::Key << "max_steps" << YAML::Value << s.max_steps << YAML::Comment("0: no limit");
   out << YAML::Key << "debris_contact" << YAML::Value << (s.debris_contact ? "true" : "false");
   out << YAML::Key << "contact" << YAML::Value << YAML::BeginMap;
-  const bool sliding = s.contact.kind == ContactSettings::Kind::sliding;
+  const bool sliding = s.contact.sliding();
   out << YAML::Key << "type" << YAML::Value << (sliding ? "sliding" : "seizing");
   if (sliding) scalar(out, "friction", s.contact.friction, "Coulomb");
   out << YAML::EndMap;

@@ -19,7 +19,7 @@ void requireKnown(const Problem& problem) {
   if (std::find(known.begin(), known.end(), problem.method) == known.end())
     throw Error(fmt::format("solver.method '{}' is not a method of this Kessler (known: {})", problem.method,
                             fmt::join(known, ", ")));
-  if (problem.method == "sph" && problem.settings.solver.contact.kind == ContactSettings::Kind::sliding)
+  if (problem.method == "sph" && problem.settings.solver.contact.sliding())
     throw InputError(
         "solver.contact: a sliding contact is OTM's for now; SPH's bodies meet through their particle "
         "pairs (give type: seizing, or solver.method: otm)");

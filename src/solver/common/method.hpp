@@ -18,7 +18,6 @@
 
 namespace kessler {
 
-// Where a method stands in time.
 // What a gathered method (Method::gathered) reports for the distributed run it stands for: rank 0's
 // timers, and the sizes and notes of the whole run.
 struct GatheredReport {
@@ -27,6 +26,7 @@ struct GatheredReport {
   std::vector<std::string> notes;
 };
 
+// Where a method stands in time.
 struct Clock {
   double time = 0.0;        // s
   long steps = 0;           // steps taken

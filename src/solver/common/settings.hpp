@@ -12,6 +12,7 @@ struct ContactSettings {
   };
   Kind kind = Kind::seizing;
   double friction = 0.0;  // Coulomb coefficient of a sliding contact
+  bool sliding() const { return kind == Kind::sliding; }
 };
 
 // What every method reads.

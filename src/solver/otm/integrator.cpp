@@ -368,10 +368,12 @@ void Integrator::buildSurface() {
 
 void Integrator::slide() {
   buildSurface();
-  std::vector<Vec3> du(increment_.size());
-  for (std::size_t a = 0; a < du.size(); ++a) du[a] = increment_[a].du;
   NodeStore& nodes = model_.nodes;
-  const std::vector<Vec3> v_before(nodes.v.begin(), nodes.v.begin() + nodes.owned);
+  std::vector<Vec3>& du = slide_du_;
+  du.resize(increment_.size());
+  for (std::size_t a = 0; a < du.size(); ++a) du[a] = increment_[a].du;
+  const std::vector<Vec3>& v_before = slide_v_;
+  slide_v_.assign(nodes.v.begin(), nodes.v.begin() + nodes.owned);
   contact_heat_.assign(du.size(), 0.0);
   sliding_report_ = sliding_.apply(
       surface_, SlidingCarriers{nodes.x, du, nodes.v, nodes.mass, nodes.body, nodes.constrained, contact_heat_},

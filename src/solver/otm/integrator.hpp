@@ -101,7 +101,7 @@ class Integrator {
   // of the step's node displacements and velocities (solver/common/sliding_contact.hpp).
   void buildSurface();
   void slide();
-  bool sliding() const { return settings_.contact.kind == ContactSettings::Kind::sliding; }
+  bool sliding() const { return settings_.contact.sliding(); }
   void requireFacesInOrder() const;
   void updatePoints();
   void initialVolumeRates();
@@ -139,8 +139,9 @@ class Integrator {
   DebrisContact contact_;
   SlidingContact sliding_;
   ContactSurface surface_;
-  SlidingReport sliding_report_;      // the last step's
-  std::vector<double> contact_heat_;  // per node: the kinetic energy the step's sliding contact took, J
+  SlidingReport sliding_report_;          // the last step's
+  std::vector<double> contact_heat_;      // per node: the kinetic energy the step's sliding contact took, J
+  std::vector<Vec3> slide_du_, slide_v_;  // slide()'s copies of the nodes' displacements and velocities
   std::vector<NodeIncrement> increment_;
   std::vector<double> j_point_;  // det(dF) per point (after averaging)
   // J per point, heat to add: before the material update the kinetic energy the step's transfer took,

@@ -91,9 +91,8 @@ int Neighbourhoods::gather(const Model& model, LocalIndex p, double scale, bool 
   const double h = spacing_[p];
   const int own = points.body[p];
   // A sliding contact keeps the bodies' neighbourhoods apart (solver/common/sliding_contact.hpp).
-  const double contact2 = settings_.contact.kind == ContactSettings::Kind::sliding
-                              ? -1.0
-                              : settings_.contact_distance * settings_.contact_distance * h * h;
+  const double contact2 =
+      settings_.contact.sliding() ? -1.0 : settings_.contact_distance * settings_.contact_distance * h * h;
   double radius = scale * (h * cutoff_per_spacing_);
   for (int attempt = 0;; ++attempt) {
     // Seizing contact (solver/common/contact.hpp): another body's nodes count only once that

@@ -229,7 +229,7 @@ void OtmMethod::load(const StateReader& in) {
   for (LocalIndex a : conn.node)
     if (a < 0 || a >= nodes.size()) in.fail(fmt::format("use the connectivity: node {} does not exist", a));
   if (!distribution_) conn.buildTranspose(nodes.size());  // a distributed run's, once it holds its part
-  if (integrator_.settings().contact.kind == ContactSettings::Kind::sliding) {
+  if (integrator_.settings().contact.sliding()) {
     std::vector<std::int64_t> faces;
     const std::size_t values = in.length("/contact/faces");
     if (values % 5 != 0) in.fail("use the contact faces: their count is not a multiple of 5");

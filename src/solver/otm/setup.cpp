@@ -139,7 +139,7 @@ void orderForLocality(Model& model) {
 
 Model buildModel(const Problem& problem) {
   Model model;
-  const bool faces = problem.settings.solver.contact.kind == ContactSettings::Kind::sliding;
+  const bool faces = problem.settings.solver.contact.sliding();
   for (const BodySetup& setup : problem.bodies) {
     const LocalIndex first_node = model.nodes.size(), first_point = model.points.size();
     const auto* request = std::get_if<geometry::MeshRequest>(&setup.mesh);
