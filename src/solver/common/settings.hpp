@@ -100,11 +100,20 @@ struct SphOptions {
   double element_min_quality = 0.2;
 };
 
+// RKPM's options (docs/theory.md §12).
+struct RkpmOptions {
+  // The kernel's support radius in particle spacings: at 2, a point between particles of a cubic
+  // lattice sees about 33 of them, and its linear basis stays well conditioned one layer inside a
+  // surface or an edge.
+  double support = 2.0;
+};
+
 // A method's settings: what every method reads and each method's own block.
 struct MethodSettings {
   SolverSettings solver;
   OtmOptions otm;
   SphOptions sph;
+  RkpmOptions rkpm;
 };
 
 }  // namespace kessler

@@ -8,10 +8,6 @@
 
 namespace kessler::otm {
 
-double christensenLimiter(double mean_ratio, double min_ratio) {
-  return std::clamp(std::min(mean_ratio, 2.0 * min_ratio), 0.0, 1.0);
-}
-
 double stabilisationPressure(const PointStore& points, LocalIndex p, double alpha, double tensile_limit) {
   const double c = points.sound_speed[p];
   const double pressure = -alpha * points.density(p) * c * c * points.volume_defect[p];

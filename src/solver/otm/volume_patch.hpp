@@ -10,6 +10,7 @@
 //     pressure pushes back on in the forces, so that the averaging has no zero-energy mode.
 #include "particles/store.hpp"
 #include "solver/common/own_sums.hpp"
+#include "solver/common/viscosity_limiter.hpp"
 #include "solver/otm/connectivity.hpp"
 
 #include <array>
@@ -77,11 +78,6 @@ class VolumePatch {
   bool rebook_ = false;              // closeStep() books the stiffness's change (with the relaxation only)
   std::vector<double> limits_;       // per body, the tensile limit (none: no limit)
 };
-
-// Christensen's limiter for one point from the ratios r_a = ln j_a / ln j_p of the nodal means to
-// its own volume change over its support (compression only): phi = clamp(min(mean r, 2 min r), 0, 1).
-// `mean_ratio` is the shape-function-weighted mean, `min_ratio` the smallest.
-double christensenLimiter(double mean_ratio, double min_ratio);
 
 // The stabilisation pressure of a point, -alpha rho c^2 volume_defect (Pa): a point whose own volume
 // change has run below its patch average pushes its nodes apart, one above it pulls them together

@@ -1,6 +1,7 @@
 #pragma once
 // SPH's state (docs/theory.md §10): the shared particle state (solver/common/particle_state.hpp),
 // whose material points are the particles, and each particle's prescribed velocity components.
+#include "solver/common/particle_bodies.hpp"
 #include "solver/common/particle_state.hpp"
 
 #include <array>
@@ -8,13 +9,6 @@
 #include <vector>
 
 namespace kessler::sph {
-
-// A lattice body's elements (geometry/lattice.hpp): element (i, j, k) spans origin + (i, j, k) cell
-// to origin + (i + 1, j + 1, k + 1) cell.
-struct LatticeFrame {
-  Vec3 origin = Vec3::Zero();
-  Vec3 cell = Vec3::Zero();  // zero: the body is not a lattice (a tet mesh's barycentres)
-};
 
 struct Model : ParticleState {
   // Per particle, in store order: bit a set if velocity component a is prescribed, to prescribed_v[a]

@@ -11,6 +11,7 @@
 // j's share reflected. Each particle gathers its pairs' shares in a fixed order (those it lists,
 // then those that list it, in the order of their listing particle), the same for any thread count.
 #include "search/cell_list.hpp"
+#include "solver/common/mirror.hpp"
 #include "solver/common/own_sums.hpp"
 #include "solver/sph/model.hpp"
 
@@ -19,22 +20,6 @@
 #include <vector>
 
 namespace kessler::sph {
-
-// x reflected across the symmetry planes normal to the axes whose bits `mirror` sets.
-inline Vec3 reflect(Vec3 x, std::uint8_t mirror) {
-  for (int a = 0; a < 3; ++a)
-    if (mirror & (1u << a)) x[a] = -x[a];
-  return x;
-}
-// A tensor of the image (R T R with R the reflection).
-inline Mat3 reflect(Mat3 t, std::uint8_t mirror) {
-  for (int a = 0; a < 3; ++a)
-    if (mirror & (1u << a)) {
-      t.row(a) *= -1.0;
-      t.col(a) *= -1.0;
-    }
-  return t;
-}
 
 struct Pairs {
   std::vector<Index> offset;         // the pairs particle i lists are [offset[i], offset[i + 1])

@@ -1,6 +1,7 @@
 #include "solver/sph/sph_method.hpp"
 
 #include "core/error.hpp"
+#include "solver/common/particle_bodies.hpp"
 #include "solver/sph/setup.hpp"
 
 #include <fmt/format.h>
@@ -30,7 +31,7 @@ SphMethod::SphMethod(Model model, const Problem& problem, const parallel::Commun
   for (const PlaneConstraint& plane : problem.planes) {
     if (!plane.history) continue;
     History h{plane.axis, plane.history, {}, {}};
-    for (const LocalIndex p : particlesOnPlane(model_, plane)) h.ids.push_back(model_.points.id[p]);
+    for (const LocalIndex p : particlesOnPlane(model_.points, plane)) h.ids.push_back(model_.points.id[p]);
     histories_.push_back(std::move(h));
   }
 }

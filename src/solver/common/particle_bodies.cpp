@@ -1,0 +1,71 @@
+#include "solver/common/particle_bodies.hpp"
+
+#include "core/error.hpp"
+#include "geometry/lattice.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace kessler {
+
+namespace {
+
+BodyParticles fromLattice(geometry::Lattice&& lattice) {
+  return {std::move(lattice.particles), {lattice.origin, lattice.cell}, std::move(lattice.element)};
+}
+
+}  // namespace
+
+BodyParticles particlesOf(const BodySetup& setup, const std::vector<int>& symmetry_axes, const char* method) {
+  if (const auto* structured = std::get_if<geometry::StructuredBox>(&setup.mesh)) {
+    try {
+      return fromLattice(geometry::fillBoxLattice(structured->box, structured->cells));
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("body '{}': {}", setup.name, e.what()));
+    }
+  }
+  const auto* request = std::get_if<geometry::MeshRequest>(&setup.mesh);
+  if (request == nullptr || std::holds_alternative<geometry::MeshFile>(request->shape)) {
+    BodyParticles tets;
+    if (request == nullptr) {
+      tets.particles = std::get<geometry::Discretisation>(setup.mesh);
+    } else {
+      geometry::MeshRequest clipped = *request;
+      clipped.symmetry_axes = symmetry_axes;
+      tets.particles = geometry::discretise(geometry::meshShape(clipped));
+    }
+    // A particle's spacing is the cube root of its volume (a tet's mean edge, OTM's support size,
+    // is about twice the distance between barycentres).
+    geometry::Discretisation& d = tets.particles;
+    for (std::size_t p = 0; p < d.points.size(); ++p) d.spacings[p] = std::cbrt(d.volumes[p]);
+    tets.element.assign(d.points.size(), {-1, -1, -1});
+    return tets;
+  }
+  if (request->refine)
+    throw InputError(
+        fmt::format("body '{}': {} fills a body with one particle size; refine is OTM's", setup.name, method));
+  try {
+    return fromLattice(geometry::fillLattice(request->shape, request->mesh_size, symmetry_axes));
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("body '{}': {}", setup.name, e.what()));
+  }
+}
+
+std::vector<LocalIndex> fixedParticles(const BodySetup& setup, const BodyParticles& made) {
+  const auto* request = std::get_if<geometry::MeshRequest>(&setup.mesh);
+  if (request == nullptr) return {};
+  const double depth = 0.5 * made.particles.spacings.front() * (1.0 + 1e-6);
+  return geometry::selectNodes(request->shape, made.particles.points, setup.fixed, depth);
+}
+
+std::vector<LocalIndex> particlesOnPlane(const PointStore& points, const PlaneConstraint& plane) {
+  std::vector<LocalIndex> on;
+  for (LocalIndex p = 0; p < points.size(); ++p) {
+    if (plane.body >= 0 && points.body[p] != plane.body) continue;
+    if (std::abs(points.x[p][plane.axis] - plane.offset) < points.spacing0[p] + plane.tolerance) on.push_back(p);
+  }
+  return on;
+}
+
+}  // namespace kessler

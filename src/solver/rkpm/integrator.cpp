@@ -1,0 +1,312 @@
+#include "solver/rkpm/integrator.hpp"
+
+#include "core/error.hpp"
+#include "solver/common/body_laws.hpp"
+#include "solver/common/mirror.hpp"
+#include "solver/common/stable_step.hpp"
+#include "solver/common/viscosity_limiter.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace kessler::rkpm {
+
+namespace {
+
+// Row I of the transpose: the rows J that list I, with their values, in the order of J.
+Table<Vec3> transpose(const Table<Vec3>& t) {
+  const LocalIndex n = t.rows();
+  Table<Vec3> out;
+  out.offset.assign(static_cast<std::size_t>(n) + 1, 0);
+  for (const LocalIndex i : t.column) ++out.offset[static_cast<std::size_t>(i) + 1];
+  for (std::size_t r = 0; r < static_cast<std::size_t>(n); ++r) out.offset[r + 1] += out.offset[r];
+  out.column.resize(t.column.size());
+  out.mirror.resize(t.mirror.size());
+  out.value.resize(t.value.size());
+  std::vector<LocalIndex> cursor(out.offset.begin(), out.offset.end() - 1);
+  for (LocalIndex j = 0; j < n; ++j)
+    for (LocalIndex e = t.offset[j]; e < t.offset[j + 1]; ++e) {
+      const auto slot = static_cast<std::size_t>(cursor[t.column[static_cast<std::size_t>(e)]]++);
+      out.column[slot] = j;
+      out.mirror[slot] = t.mirror[static_cast<std::size_t>(e)];
+      out.value[slot] = t.value[static_cast<std::size_t>(e)];
+    }
+  return out;
+}
+
+}  // namespace
+
+Integrator::Integrator(Model& model, const Settings& settings)
+    : model_(model),
+      settings_(settings),
+      erosion_(settings.solver.erosion_radius),
+      release_(settings.solver.erosion_radius) {
+  KESSLER_VERIFY(settings.solver.cfl > 0.0 && settings.solver.cfl <= 1.0, "cfl must lie in (0, 1], got {}",
+                 settings.solver.cfl);
+  KESSLER_VERIFY(settings.solver.end_time > 0.0, "end_time must be positive, got {}", settings.solver.end_time);
+  KESSLER_VERIFY(settings.rkpm.support > 1.0, "the RKPM support must exceed one spacing, got {}",
+                 settings.rkpm.support);
+  const std::size_t n = model.points.x.size();
+  KESSLER_VERIFY(model.constrained.size() == n && model.prescribed_v.size() == n && model.reference.size() == n &&
+                     model.coefficient_x.size() == n && model.coefficient_v.size() == n &&
+                     model.cell_volume.size() == n,
+                 "RKPM's arrays do not match its {} particles", n);
+}
+
+// The reference configuration's kernels, masses and collocation: a pure function of the model, so
+// that a restored run has the same as the run that wrote it.
+void Integrator::prepare() {
+  PointStore& points = model_.points;
+  const auto n = static_cast<std::size_t>(points.owned);
+  body_points_ = bodyRanges(points.body, points.owned, model_.bodies.size());
+  std::vector<double> support(n);
+  for (std::size_t p = 0; p < n; ++p) support[p] = settings_.rkpm.support * points.spacing0[p];
+  std::vector<std::string> names;
+  for (const BodyInfo& b : model_.bodies) names.push_back(b.name);
+  {
+    ScopedPhase phase(timers_, "kernels");
+    kernels_ = buildKernels({model_.reference, points.body, support, points.volume0, model_.cell_volume, model_.faces,
+                             names, settings_.symmetry_axes});
+    transposed_ = transpose(kernels_.gradient);
+  }
+  // Row-sum lumped masses: the coefficients carry the particles' momentum, sum_I m_I vhat_I =
+  // sum_K m_K v_K.
+  mass_.assign(n, 0.0);
+  const Table<double>& psi = kernels_.psi;
+  for (std::size_t k = 0; k < n; ++k)
+    for (LocalIndex e = psi.offset[k]; e < psi.offset[k + 1]; ++e)
+      mass_[static_cast<std::size_t>(psi.column[static_cast<std::size_t>(e)])] +=
+          points.mass[k] * psi.value[static_cast<std::size_t>(e)];
+  for (std::size_t i = 0; i < n; ++i)
+    if (!(mass_[i] > 0.0))
+      throw Error(
+          fmt::format("RKPM: the lumped mass of particle {} of body '{}' is {:.3g} kg, not positive: its "
+                      "kernel's negative values outweigh the positive (docs/theory.md §12)",
+                      points.id[i], model_.bodies[static_cast<std::size_t>(points.body[i])].name, mass_[i]));
+  collocation_ = VelocityCollocation(psi, model_.constrained);
+  acceleration_.assign(n, Vec3::Zero());
+  volume_rate_.assign(n, 0.0);
+  piola_.assign(n, Mat3::Zero());
+}
+
+void Integrator::initialise() {
+  prepare();
+  PointStore& points = model_.points;
+  for (std::size_t b = 0; b < model_.bodies.size(); ++b)
+    model_.materials[model_.bodies[b].material]->initialise(points, body_points_[b].begin, body_points_[b].end);
+  collocation_.impose(model_.prescribed_v, model_.coefficient_v);
+  {
+    ScopedPhase phase(timers_, "constitutive");
+    updateMaterials(0.0);
+  }
+  place();
+  forces();
+  // The initial velocity field's volume rate bounds the first step (a cold gas has no sound speed).
+  const Table<Vec3>& g = kernels_.gradient;
+#pragma omp parallel for schedule(static)
+  for (LocalIndex j = 0; j < points.owned; ++j) {
+    double divergence = 0.0;
+    for (LocalIndex e = g.offset[j]; e < g.offset[j + 1]; ++e) {
+      const auto slot = static_cast<std::size_t>(e);
+      divergence +=
+          reflect(model_.coefficient_v[static_cast<std::size_t>(g.column[slot])], g.mirror[slot]).dot(g.value[slot]);
+    }
+    volume_rate_[j] = divergence;
+  }
+  clock_.dt_next = clock_.dt_initial = stableStep(points, volume_rate_, std::numeric_limits<double>::infinity(),
+                                                  settings_.solver.cfl, [&](LocalIndex p) { return stepLength(p); });
+}
+
+void Integrator::restore(const Clock& clock) {
+  prepare();
+  clock_ = clock;
+  forces();
+}
+
+void Integrator::step() {
+  const double dt = std::min(clock_.dt_next, settings_.solver.end_time - clock_.time);
+  KESSLER_VERIFY(dt > 0.0, "step called after the end time");
+  try {
+    {
+      ScopedPhase phase(timers_, "point update");
+      kick(0.5 * (clock_.dt_last + dt), dt);
+      deform(dt);
+    }
+    {
+      ScopedPhase phase(timers_, "constitutive");
+      updateMaterials(dt);
+    }
+    {
+      ScopedPhase phase(timers_, "erosion");
+      erosion_.apply(model_);
+      release_.apply(model_);
+    }
+    {
+      ScopedPhase phase(timers_, "assembly");
+      place();
+      forces();
+    }
+  } catch (const NumericalError& e) {
+    throw NumericalError(fmt::format("step {}, t = {:.6g} s: {}", clock_.steps + 1, clock_.time, e.what()));
+  }
+  clock_.time += dt;
+  clock_.dt_last = dt;
+  ++clock_.steps;
+  ScopedPhase phase(timers_, "time step");
+  clock_.dt_next = stableStep(model_.points, volume_rate_, std::numeric_limits<double>::infinity(),
+                              settings_.solver.cfl, [&](LocalIndex p) { return stepLength(p); });
+}
+
+void Integrator::kick(double dt_kick, double dt) {
+  const LocalIndex n = model_.points.owned;
+  std::vector<Vec3>& v = model_.coefficient_v;
+#pragma omp parallel for schedule(static)
+  for (LocalIndex i = 0; i < n; ++i) {
+    v[i] += dt_kick * acceleration_[i];
+    // The walls stop the coefficients (docs/theory.md §12: an approximation, as the particles lie
+    // within a fraction of a spacing of their coefficients near a wall).
+    imposeBoundaries(0, Vec3::Zero(), settings_.walls, model_.coefficient_x[i], dt, v[i]);
+  }
+  collocation_.impose(model_.prescribed_v, v);
+}
+
+void Integrator::deform(double dt) {
+  PointStore& points = model_.points;
+  const LocalIndex n = points.owned;
+#pragma omp parallel for schedule(static)
+  for (LocalIndex i = 0; i < n; ++i) model_.coefficient_x[i] += dt * model_.coefficient_v[i];
+  const Table<Vec3>& g = kernels_.gradient;
+  LocalIndex bad = n;
+#pragma omp parallel for schedule(static) reduction(min : bad)
+  for (LocalIndex j = 0; j < n; ++j) {
+    points.dF[j].setIdentity();
+    volume_rate_[j] = 0.0;
+    if (points.debris(j)) continue;
+    Mat3 F = Mat3::Identity();
+    for (LocalIndex e = g.offset[j]; e < g.offset[j + 1]; ++e) {
+      const auto slot = static_cast<std::size_t>(e);
+      const auto i = static_cast<std::size_t>(g.column[slot]);
+      F.noalias() +=
+          reflect(Vec3(model_.coefficient_x[i] - model_.reference[i]), g.mirror[slot]) * g.value[slot].transpose();
+    }
+    const double J = F.determinant();
+    const Mat3 dF = F * points.F[j].inverse();
+    const double j_step = dF.determinant();
+    if (J > 0.0 && j_step > 0.0 && std::isfinite(J) && std::isfinite(j_step)) {
+      points.dF[j] = dF;
+      points.F[j] = F;
+      points.volume[j] = points.volume0[j] * J;
+      volume_rate_[j] = std::log(j_step) / dt;
+    } else if (points.failed(j)) {
+      points.carrier[j] = -1;  // failed material crushed through itself is debris (docs/theory.md §8)
+    } else {
+      bad = std::min(bad, j);
+    }
+  }
+  if (bad < n) failAtPoint(bad, "volume inverted or collapsed over the step (det F <= 0)");
+  // The viscosity's limiter, from the step's volume change of the particles the kernel reaches.
+  const Table<double>& psi = kernels_.psi;
+#pragma omp parallel for schedule(static)
+  for (LocalIndex j = 0; j < n; ++j) {
+    points.viscosity_limiter[j] = 0.0;
+    const double own = volume_rate_[j];
+    if (points.debris(j) || !(own < 0.0)) continue;
+    double weight = 0.0, mean = 0.0, least = std::numeric_limits<double>::infinity();
+    for (LocalIndex e = psi.offset[j]; e < psi.offset[j + 1]; ++e) {
+      const double w = psi.value[static_cast<std::size_t>(e)];
+      if (w <= 0.0) continue;
+      const double ratio = volume_rate_[static_cast<std::size_t>(psi.column[static_cast<std::size_t>(e)])] / own;
+      weight += w;
+      mean += w * ratio;
+      least = std::min(least, ratio);
+    }
+    if (weight > 0.0) points.viscosity_limiter[j] = christensenLimiter(mean / weight, least);
+  }
+#pragma omp parallel for schedule(static)
+  for (LocalIndex j = 0; j < n; ++j)
+    if (points.debris(j)) {
+      points.stress[j].setZero();
+      points.viscous_pressure[j] = 0.0;
+    }
+}
+
+void Integrator::updateMaterials(double dt) {
+  PointStore& points = model_.points;
+  try {
+    updateBodies(model_, body_points_, dt);
+  } catch (const PointError& e) {
+    failAtPoint(static_cast<LocalIndex>(e.point()), e.what());
+  }
+  LocalIndex bad = points.owned;
+#pragma omp parallel for schedule(static) reduction(min : bad)
+  for (LocalIndex p = 0; p < points.owned; ++p)
+    if (!points.stress[p].allFinite() || !std::isfinite(points.energy[p]) ||
+        !(points.debris(p) || points.sound_speed[p] >= 0.0))
+      bad = std::min(bad, p);
+  if (bad < points.owned) failAtPoint(bad, "the material update gave a non-finite stress, energy or sound speed");
+}
+
+// The particles where their coefficients put them.
+void Integrator::place() {
+  VelocityCollocation::interpolate(kernels_.psi, model_.coefficient_x, model_.points.x);
+  VelocityCollocation::interpolate(kernels_.psi, model_.coefficient_v, model_.points.v);
+}
+
+void Integrator::forces() {
+  PointStore& points = model_.points;
+  const LocalIndex n = points.owned;
+#pragma omp parallel for schedule(static)
+  for (LocalIndex j = 0; j < n; ++j) {
+    if (points.debris(j)) {
+      piola_[j].setZero();
+      continue;
+    }
+    const Mat3& F = points.F[j];
+    piola_[j] = points.volume0[j] * F.determinant() * points.stress[j] * F.inverse().transpose();
+  }
+  const Table<Vec3>& t = transposed_;
+#pragma omp parallel for schedule(static)
+  for (LocalIndex i = 0; i < n; ++i) {
+    Vec3 f = Vec3::Zero();
+    for (LocalIndex e = t.offset[i]; e < t.offset[i + 1]; ++e) {
+      const auto slot = static_cast<std::size_t>(e);
+      f -= reflect(Vec3(piola_[static_cast<std::size_t>(t.column[slot])] * t.value[slot]), t.mirror[slot]);
+    }
+    acceleration_[i] = f / mass_[i];
+  }
+}
+
+double Integrator::stepLength(LocalIndex p) const {
+  return model_.points.spacing0[p] * smallestStretch(model_.points.F[p]);
+}
+
+Energies Integrator::energies() const {
+  Energies e = pointEnergies(model_.points, 0.0);
+  double kinetic = 0.0;
+  Vec3 momentum = Vec3::Zero();
+  for (std::size_t i = 0; i < mass_.size(); ++i) {
+    kinetic += 0.5 * mass_[i] * model_.coefficient_v[i].squaredNorm();
+    momentum += mass_[i] * model_.coefficient_v[i];
+  }
+  e.kinetic = kinetic;
+  e.momentum = momentum;
+  return e;
+}
+
+double Integrator::meanNeighbours() const {
+  const LocalIndex n = kernels_.gradient.rows();
+  return n > 0 ? static_cast<double>(kernels_.gradient.column.size()) / static_cast<double>(n) : 0.0;
+}
+
+void Integrator::failAtPoint(LocalIndex p, const std::string& what) const {
+  const PointStore& points = model_.points;
+  const Vec3& x = points.x[p];
+  throw NumericalError(fmt::format("particle {} of body '{}' at ({:.6g}, {:.6g}, {:.6g}) m: {}", points.id[p],
+                                   model_.bodies[static_cast<std::size_t>(points.body[p])].name, x[0], x[1], x[2],
+                                   what));
+}
+
+}  // namespace kessler::rkpm

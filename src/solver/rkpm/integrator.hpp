@@ -1,0 +1,84 @@
+#pragma once
+// RKPM's time step (docs/theory.md §12): a total-Lagrangian reproducing kernel particle method with
+// stabilised conforming nodal integration, central differences in time.
+//   1. kick: vhat += dt_avg f / m (the last step's forces, lumped masses), the walls, then velocity
+//      collocation of the prescribed components (solver/rkpm/collocation.hpp);
+//   2. drift xhat += dt vhat; each particle's deformation gradient from the coefficients,
+//      F_J = I + sum_I (xhat_I - X_I) (x) grad~ Psi_I(X_J), and dF = F F_old^-1;
+//   3. the material update (the shared laws, from F, dF and the volume), with the laws' bulk
+//      viscosity under Christensen's limiter;
+//   4. eigenerosion and the release of failed particles as debris (solver/common/);
+//   5. the particles' physical positions and velocities, sum_I Psi_I(X_K) (xhat_I, vhat_I);
+//   6. the forces f_I = -sum_J V0_J P_J grad~ Psi_I(X_J) (P the first Piola-Kirchhoff stress), whose
+//      power is the stress power the laws book, and the stable step.
+#include "core/timer.hpp"
+#include "solver/common/eigenerosion.hpp"
+#include "solver/common/energies.hpp"
+#include "solver/common/method.hpp"
+#include "solver/common/release.hpp"
+#include "solver/common/settings.hpp"
+#include "solver/common/walls.hpp"
+#include "solver/rkpm/collocation.hpp"
+#include "solver/rkpm/kernels.hpp"
+#include "solver/rkpm/model.hpp"
+
+#include <string>
+#include <vector>
+
+namespace kessler::rkpm {
+
+struct Settings {
+  SolverSettings solver;
+  RkpmOptions rkpm;
+  std::vector<RigidWall> walls;
+  std::vector<int> symmetry_axes;
+};
+
+class Integrator {
+ public:
+  Integrator(Model& model, const Settings& settings);
+  // The kernels, the masses and the collocation of the reference configuration, the first forces
+  // and time step of a new run.
+  void initialise();
+  // A restored run: the kernels of its reference configuration and the forces of its state.
+  void restore(const Clock& clock);
+  void step();
+
+  bool finished() const { return clock_.time >= settings_.solver.end_time * (1.0 - 1e-12); }
+  const Clock& clock() const { return clock_; }
+  const Settings& settings() const { return settings_; }
+  const PhaseTimers& timers() const { return timers_; }
+  // The budget with the coefficients' kinetic energy and momentum (the equations of motion's).
+  Energies energies() const;
+  // The length a particle's stable step is measured by: its spacing times its smallest stretch.
+  double stepLength(LocalIndex p) const;
+  const Kernels& kernels() const { return kernels_; }
+  const std::vector<double>& masses() const { return mass_; }
+  double meanNeighbours() const;
+
+ private:
+  void prepare();
+  void kick(double dt_kick, double dt);
+  void deform(double dt);
+  void updateMaterials(double dt);
+  void place();
+  void forces();
+  [[noreturn]] void failAtPoint(LocalIndex p, const std::string& what) const;
+
+  Model& model_;
+  Settings settings_;
+  Clock clock_;
+  PhaseTimers timers_;
+  Kernels kernels_;
+  Table<Vec3> transposed_;    // row I: the particles J and grad~ Psi_I(X_J)
+  std::vector<double> mass_;  // the coefficients' lumped masses, sum_K m_K Psi_I(X_K)
+  VelocityCollocation collocation_;
+  Eigenerosion erosion_;
+  DebrisRelease release_;
+  std::vector<IndexRange> body_points_;
+  std::vector<Vec3> acceleration_;
+  std::vector<double> volume_rate_;  // ln det dF / dt of the last step
+  std::vector<Mat3> piola_;          // V0_J P_J
+};
+
+}  // namespace kessler::rkpm

@@ -1,0 +1,205 @@
+#include "solver/rkpm/kernels.hpp"
+
+#include "core/error.hpp"
+#include "search/cell_list.hpp"
+#include "solver/common/mirror.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+namespace kessler::rkpm {
+
+namespace {
+
+// The kernel values at one point of body `body`, as (particle, mirror, value) entries: the particles
+// in the search's order, then each image set (by mirror) in the same order.
+class Evaluator {
+ public:
+  Evaluator(const KernelInput& in, const CellList& cells, double reach) : in_(in), cells_(cells), reach_(reach) {
+    for (const int a : in.symmetry_axes) planes_ |= static_cast<std::uint8_t>(1u << a);
+  }
+
+  // False where the moment matrix is singular (rcond() then says how nearly).
+  bool at(const Vec3& x, int body, double scale, std::vector<LocalIndex>& who, std::vector<std::uint8_t>& mirror,
+          std::vector<double>& psi) {
+    who.clear();
+    mirror.clear();
+    samples_.clear();
+    for (std::uint8_t m = 0; m < 8; ++m) {
+      if ((m & planes_) != m) continue;
+      bool near = true;  // an image set is seen only within reach of each of its planes
+      for (int a = 0; a < 3; ++a)
+        if ((m & (1u << a)) && !(std::abs(x[a]) < reach_)) near = false;
+      if (!near) continue;
+      // The image of particle i seen from x is i seen from the image of x: |x - R X_i| = |R x - X_i|.
+      const Vec3 image = reflect(x, m);
+      cells_.forEachWithin(image, reach_, [&](LocalIndex i, double d2) {
+        if (in_.body[i] != body || d2 >= in_.support[i] * in_.support[i]) return;
+        who.push_back(i);
+        mirror.push_back(m);
+        samples_.push_back({x - reflect(in_.reference[i], m), in_.support[i], in_.volume[i]});
+      });
+    }
+    psi.assign(who.size(), 0.0);
+    rcond_ = rk::shapeValues(samples_, scale, psi);
+    return rcond_ >= rk::min_rcond;
+  }
+  double rcond() const { return rcond_; }
+
+ private:
+  const KernelInput& in_;
+  const CellList& cells_;
+  double reach_;
+  std::uint8_t planes_ = 0;
+  std::vector<rk::Sample> samples_;
+  double rcond_ = 0.0;
+};
+
+// One table row's entries as they are gathered.
+template <class T>
+struct Row {
+  std::vector<LocalIndex> column;
+  std::vector<std::uint8_t> mirror;
+  std::vector<T> value;
+};
+
+template <class T>
+Table<T> flatten(std::vector<Row<T>>& rows) {
+  Table<T> t;
+  t.offset.resize(rows.size() + 1);
+  for (std::size_t r = 0; r < rows.size(); ++r)
+    t.offset[r + 1] = t.offset[r] + static_cast<LocalIndex>(rows[r].column.size());
+  const auto entries = static_cast<std::size_t>(t.offset.back());
+  t.column.reserve(entries);
+  t.mirror.reserve(entries);
+  t.value.reserve(entries);
+  for (Row<T>& row : rows) {
+    t.column.insert(t.column.end(), row.column.begin(), row.column.end());
+    t.mirror.insert(t.mirror.end(), row.mirror.begin(), row.mirror.end());
+    t.value.insert(t.value.end(), row.value.begin(), row.value.end());
+    row = Row<T>{};
+  }
+  return t;
+}
+
+}  // namespace
+
+Kernels buildKernels(const KernelInput& in) {
+  const auto n = static_cast<LocalIndex>(in.reference.size());
+  Kernels k;
+  if (n == 0) return k;
+  const double reach = *std::max_element(in.support.begin(), in.support.end());
+  CellList cells;
+  cells.build(in.reference, n, reach);
+
+  // Where a moment matrix was singular: the first such point in index order (faces after particles).
+  struct Failure {
+    std::size_t at = std::numeric_limits<std::size_t>::max();
+    Vec3 x = Vec3::Zero();
+    int body = 0;
+    double rcond = 0.0;
+  };
+  Failure failure;
+  auto fail = [&](std::size_t at, const Vec3& x, int body, double rcond) {
+#pragma omp critical(rkpm_kernel_failure)
+    if (at < failure.at) failure = {at, x, body, rcond};
+  };
+
+  // The values at the particles.
+  std::vector<Row<double>> rows(static_cast<std::size_t>(n));
+#pragma omp parallel
+  {
+    Evaluator e(in, cells, reach);
+#pragma omp for schedule(dynamic, 256)
+    for (LocalIndex p = 0; p < n; ++p) {
+      Row<double>& r = rows[static_cast<std::size_t>(p)];
+      if (!e.at(in.reference[p], in.body[p], in.support[p], r.column, r.mirror, r.value))
+        fail(static_cast<std::size_t>(p), in.reference[p], in.body[p], e.rcond());
+    }
+  }
+  k.psi = flatten(rows);
+
+  // The values at the faces' centroids.
+  const std::size_t faces = in.faces.size();
+  rows.assign(faces, {});
+#pragma omp parallel
+  {
+    Evaluator e(in, cells, reach);
+#pragma omp for schedule(dynamic, 256)
+    for (std::size_t f = 0; f < faces; ++f) {
+      const CellFace& face = in.faces[f];
+      Row<double>& r = rows[f];
+      if (!e.at(face.centroid, in.body[face.inner], in.support[face.inner], r.column, r.mirror, r.value))
+        fail(static_cast<std::size_t>(n) + f, face.centroid, in.body[face.inner], e.rcond());
+    }
+  }
+  if (failure.at != std::numeric_limits<std::size_t>::max()) {
+    const Vec3 mm = 1e3 * failure.x;
+    throw Error(fmt::format(
+        "RKPM: the reproducing kernel's moment matrix is singular at ({:.4g}, {:.4g}, {:.4g}) mm in body '{}' "
+        "(reciprocal condition {:.2g}): fewer than four particles not in one plane reach it (docs/theory.md §12)",
+        mm.x(), mm.y(), mm.z(), in.bodies[static_cast<std::size_t>(failure.body)], failure.rcond));
+  }
+  const Table<double> at_faces = flatten(rows);
+
+  // Each cell's faces.
+  std::vector<LocalIndex> first(static_cast<std::size_t>(n) + 1, 0), cell_faces;
+  for (const CellFace& f : in.faces) {
+    ++first[static_cast<std::size_t>(f.inner) + 1];
+    if (f.outer >= 0) ++first[static_cast<std::size_t>(f.outer) + 1];
+  }
+  for (std::size_t p = 0; p < static_cast<std::size_t>(n); ++p) first[p + 1] += first[p];
+  cell_faces.resize(static_cast<std::size_t>(first.back()));
+  {
+    std::vector<LocalIndex> cursor(first.begin(), first.end() - 1);
+    for (std::size_t f = 0; f < faces; ++f) {
+      cell_faces[static_cast<std::size_t>(cursor[in.faces[f].inner]++)] = static_cast<LocalIndex>(f);
+      if (in.faces[f].outer >= 0)
+        cell_faces[static_cast<std::size_t>(cursor[in.faces[f].outer]++)] = static_cast<LocalIndex>(f);
+    }
+  }
+
+  // The smoothed gradients: each cell's faces' values, summed per entry (particle, then mirror).
+  std::vector<Row<Vec3>> gradients(static_cast<std::size_t>(n));
+#pragma omp parallel
+  {
+    struct Term {
+      std::int64_t key;  // 8 particle + mirror
+      Vec3 value;
+    };
+    std::vector<Term> terms;
+#pragma omp for schedule(dynamic, 256)
+    for (LocalIndex j = 0; j < n; ++j) {
+      terms.clear();
+      for (LocalIndex s = first[j]; s < first[j + 1]; ++s) {
+        const auto f = static_cast<std::size_t>(cell_faces[static_cast<std::size_t>(s)]);
+        const Vec3 area = in.faces[f].inner == j ? in.faces[f].area : Vec3(-in.faces[f].area);
+        for (LocalIndex e = at_faces.offset[f]; e < at_faces.offset[f + 1]; ++e) {
+          const auto slot = static_cast<std::size_t>(e);
+          terms.push_back({8 * static_cast<std::int64_t>(at_faces.column[slot]) + at_faces.mirror[slot],
+                           at_faces.value[slot] * area});
+        }
+      }
+      // Stable: each entry's terms are summed in the order of the cell's faces.
+      std::stable_sort(terms.begin(), terms.end(), [](const Term& a, const Term& b) { return a.key < b.key; });
+      Row<Vec3>& row = gradients[static_cast<std::size_t>(j)];
+      const double inv = 1.0 / in.cell_volume[j];
+      for (std::size_t t = 0; t < terms.size();) {
+        Vec3 sum = Vec3::Zero();
+        const std::int64_t key = terms[t].key;
+        for (; t < terms.size() && terms[t].key == key; ++t) sum += terms[t].value;
+        row.column.push_back(static_cast<LocalIndex>(key / 8));
+        row.mirror.push_back(static_cast<std::uint8_t>(key % 8));
+        row.value.push_back(inv * sum);
+      }
+    }
+  }
+  k.gradient = flatten(gradients);
+  return k;
+}
+
+}  // namespace kessler::rkpm

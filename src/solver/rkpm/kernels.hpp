@@ -1,0 +1,63 @@
+#pragma once
+// RKPM's shape functions, computed once on the reference configuration (docs/theory.md §12): each
+// particle's reproducing kernel values at the particles (which turn coefficients into the physical
+// positions and velocities of the particles) and the stabilised conforming nodal integration's
+// smoothed gradients (Chen, Wu, Yoon & You, IJNME 50:435, 2001, eq. 21-23):
+//   grad~ Psi_I(X_J) = 1 / V_J  sum over the faces f of cell J of  Psi_I(c_f) A_f n_f,
+// the gradient averaged over the particle's cell by the divergence theorem, each face's integral by
+// its centroid (exact for the linear fields the kernels reproduce: the smoothed gradients of a
+// linear field are its gradient, which is the integration constraint of Chen et al. 2001, eq. 16).
+#include "approx/reproducing_kernel.hpp"
+#include "core/types.hpp"
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace kessler::rkpm {
+
+// A face of a particle's cell (its nodal integration domain: a lattice element, or a tetrahedron
+// around its barycentre): its area vector out of the cell of `inner`, and its centroid; `outer` is the
+// particle whose cell lies on the other side, -1 on the body's surface.
+struct CellFace {
+  Vec3 area = Vec3::Zero();
+  Vec3 centroid = Vec3::Zero();
+  LocalIndex inner = -1;
+  LocalIndex outer = -1;
+};
+
+// One row per particle: the particles column[offset[K]] ... column[offset[K + 1] - 1] and a value each.
+// A particle near a symmetry plane also sees images of particles across it (the mirrored copy of the
+// model that the run leaves out): mirror[e] sets the bits of the axes across whose planes entry e's
+// particle is reflected (solver/common/mirror.hpp), 0 for the particle itself. An image's coefficient
+// is the reflection of its particle's.
+template <class T>
+struct Table {
+  std::vector<LocalIndex> offset;  // rows + 1 entries (none for an empty table)
+  std::vector<LocalIndex> column;
+  std::vector<std::uint8_t> mirror;
+  std::vector<T> value;
+  LocalIndex rows() const { return offset.empty() ? 0 : static_cast<LocalIndex>(offset.size()) - 1; }
+};
+
+struct Kernels {
+  Table<double> psi;     // row K: Psi_I(X_K)
+  Table<Vec3> gradient;  // row J: grad~ Psi_I(X_J)
+};
+
+struct KernelInput {
+  std::span<const Vec3> reference;      // X_I
+  std::span<const int> body;            // a particle's kernel reaches only its own body's particles
+  std::span<const double> support;      // a_I, m
+  std::span<const double> volume;       // V_I (the quadrature weights of M), m^3
+  std::span<const double> cell_volume;  // the volume of each particle's cell, m^3
+  std::span<const CellFace> faces;      // every cell's faces, each once
+  std::span<const std::string> bodies;  // the bodies' names, for errors
+  std::span<const int> symmetry_axes;   // the axes normal to the problem's symmetry planes
+};
+
+// Throws kessler::Error naming the body and the position where a moment matrix is singular.
+Kernels buildKernels(const KernelInput& in);
+
+}  // namespace kessler::rkpm

@@ -1,0 +1,27 @@
+#pragma once
+// RKPM's state (docs/theory.md §12): the shared particle state (solver/common/particle_state.hpp),
+// whose material points are the particles at their physical positions and velocities, and beside it
+// the particles' coefficients, their reference positions and their cells. A particle's physical
+// position is sum_I Psi_I(X_K) xhat_I over the coefficients xhat_I, which the equations of motion
+// advance; the two differ because the shape functions do not interpolate.
+#include "solver/common/particle_state.hpp"
+#include "solver/rkpm/kernels.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace kessler::rkpm {
+
+struct Model : ParticleState {
+  // Per particle: bit a set if velocity component a is prescribed, to prescribed_v[a] (fixed faces,
+  // the deck's and the verification problems' planes), imposed by velocity collocation.
+  std::vector<std::uint8_t> constrained;
+  std::vector<Vec3> prescribed_v;
+  std::vector<Vec3> reference;      // X_I: the kernels' centres, where the particles started
+  std::vector<Vec3> coefficient_x;  // xhat_I
+  std::vector<Vec3> coefficient_v;  // vhat_I
+  std::vector<double> cell_volume;  // each particle's cell (its nodal integration domain), m^3
+  std::vector<CellFace> faces;      // the cells' faces, each once
+};
+
+}  // namespace kessler::rkpm

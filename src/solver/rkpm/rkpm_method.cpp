@@ -1,0 +1,103 @@
+#include "solver/rkpm/rkpm_method.hpp"
+
+#include "solver/common/particle_bodies.hpp"
+
+#include <fmt/format.h>
+
+namespace kessler::rkpm {
+
+Settings settingsFor(const Problem& problem) {
+  return Settings{problem.settings.solver, problem.settings.rkpm, problem.walls, problem.symmetry_axes};
+}
+
+RkpmMethod::RkpmMethod(Model model, const Settings& settings)
+    : model_(std::move(model)), integrator_(model_, settings), diagnostics_(settings.solver) {}
+
+RkpmMethod::RkpmMethod(Model model, const Problem& problem) : RkpmMethod(std::move(model), settingsFor(problem)) {
+  for (const PlaneConstraint& plane : problem.planes)
+    if (plane.history) histories_.push_back({plane.axis, plane.history, particlesOnPlane(model_.points, plane)});
+}
+
+void RkpmMethod::step() {
+  // The histories at the middle of the step, as OTM's and SPH's.
+  const Clock c = integrator_.clock();
+  for (const History& h : histories_) {
+    const double v = h.velocity(c.time + 0.5 * c.dt_next);
+    for (const LocalIndex p : h.particles) model_.prescribed_v[p][h.axis] = v;
+  }
+  integrator_.step();
+}
+
+void RkpmMethod::check(double initial_total_energy) {
+  const Clock c = integrator_.clock();
+  const StepInfo at{c.steps, c.time, c.dt_next, c.dt_initial};
+  auto driven = [&] {
+    bool here = !histories_.empty();
+    for (LocalIndex p = 0; p < model_.points.owned && !here; ++p)
+      here = model_.constrained[p] != 0 && model_.prescribed_v[p].squaredNorm() > 0.0;
+    return here;
+  };
+  const StepLengthRule rule{[&](LocalIndex p) { return integrator_.stepLength(p); },
+                            [&](LocalIndex) { return std::string("its spacing times its smallest stretch"); }};
+  diagnostics_.check(model_, at, initial_total_energy, rule, driven);
+}
+
+NodeCloud RkpmMethod::nodes() const {
+  const PointStore& points = model_.points;
+  return NodeCloud{points.id,   points.body, model_.coefficient_x, model_.coefficient_v, integrator_.masses(),
+                   points.owned};
+}
+
+void RkpmMethod::save(StateWriter& out) const {
+  const Clock c = integrator_.clock();
+  out.scalar("rkpm_time", c.time);
+  out.scalar("rkpm_dt_last", c.dt_last);
+  out.scalar("rkpm_dt_next", c.dt_next);
+  out.scalar("rkpm_dt_initial", c.dt_initial);
+  out.scalar("rkpm_steps", static_cast<std::int64_t>(c.steps));
+  out.group("/rkpm");
+  out.array("/rkpm/constrained", model_.constrained);
+  out.array("/rkpm/prescribed_v", model_.prescribed_v);
+  out.array("/rkpm/reference", model_.reference);
+  out.array("/rkpm/coefficient_x", model_.coefficient_x);
+  out.array("/rkpm/coefficient_v", model_.coefficient_v);
+  out.array("/rkpm/cell_volume", model_.cell_volume);
+  std::vector<Vec3> geometry;
+  std::vector<std::int64_t> sides;
+  for (const CellFace& f : model_.faces) {
+    geometry.push_back(f.area);
+    geometry.push_back(f.centroid);
+    sides.push_back(f.inner);
+    sides.push_back(f.outer);
+  }
+  out.scalar("rkpm_faces", static_cast<std::int64_t>(model_.faces.size()));
+  out.array("/rkpm/face_geometry", geometry);
+  out.array("/rkpm/face_sides", sides);
+}
+
+void RkpmMethod::load(const StateReader& in) {
+  const auto n = static_cast<std::size_t>(model_.points.size());
+  in.array("/rkpm/constrained", model_.constrained, n);
+  in.array("/rkpm/prescribed_v", model_.prescribed_v, n);
+  in.array("/rkpm/reference", model_.reference, n);
+  in.array("/rkpm/coefficient_x", model_.coefficient_x, n);
+  in.array("/rkpm/coefficient_v", model_.coefficient_v, n);
+  in.array("/rkpm/cell_volume", model_.cell_volume, n);
+  const std::int64_t faces = in.intScalar("rkpm_faces");
+  if (faces < 0) in.fail(fmt::format("rkpm_faces: {} faces", faces));
+  std::vector<std::int64_t> sides;
+  in.array("/rkpm/face_sides", sides, 2 * static_cast<std::size_t>(faces));
+  std::vector<Vec3> geometry;
+  in.array("/rkpm/face_geometry", geometry, 2 * static_cast<std::size_t>(faces));
+  model_.faces.resize(sides.size() / 2);
+  for (std::size_t f = 0; f < model_.faces.size(); ++f) {
+    const LocalIndex inner = static_cast<LocalIndex>(sides[2 * f]), outer = static_cast<LocalIndex>(sides[2 * f + 1]);
+    if (inner < 0 || static_cast<std::size_t>(inner) >= n || outer < -1 || outer >= static_cast<LocalIndex>(n))
+      in.fail(fmt::format("/rkpm/face_sides: face {} names particles {} and {} of {}", f, inner, outer, n));
+    model_.faces[f] = {geometry[2 * f], geometry[2 * f + 1], inner, outer};
+  }
+  integrator_.restore(Clock{in.doubleScalar("rkpm_time"), in.intScalar("rkpm_steps"), in.doubleScalar("rkpm_dt_last"),
+                            in.doubleScalar("rkpm_dt_next"), in.doubleScalar("rkpm_dt_initial")});
+}
+
+}  // namespace kessler::rkpm

@@ -1,0 +1,123 @@
+#include "solver/rkpm/setup.hpp"
+
+#include "core/error.hpp"
+#include "core/log.hpp"
+#include "solver/common/particle_bodies.hpp"
+
+#include <map>
+
+namespace kessler::rkpm {
+
+namespace {
+
+// A lattice body's cell faces: each pair of elements that share a face, once, and each element face
+// that no element shares. `first` is the body's first particle.
+void latticeFaces(const BodyParticles& made, LocalIndex first, std::vector<CellFace>& faces) {
+  const Vec3 cell = made.frame.cell;
+  std::map<std::array<int, 3>, LocalIndex> at;
+  for (std::size_t i = 0; i < made.element.size(); ++i) at[made.element[i]] = static_cast<LocalIndex>(i);
+  for (std::size_t i = 0; i < made.element.size(); ++i) {
+    const std::array<int, 3>& e = made.element[i];
+    const Vec3 centre =
+        made.frame.origin + Vec3((e[0] + 0.5) * cell[0], (e[1] + 0.5) * cell[1], (e[2] + 0.5) * cell[2]);
+    for (int a = 0; a < 3; ++a) {
+      const double area = cell[(a + 1) % 3] * cell[(a + 2) % 3];
+      for (const int side : {-1, 1}) {
+        std::array<int, 3> beside = e;
+        beside[static_cast<std::size_t>(a)] += side;
+        const auto found = at.find(beside);
+        if (found != at.end() && side < 0) continue;  // the shared face is listed from its lower element
+        CellFace f;
+        f.area = Vec3::Zero();
+        f.area[a] = side * area;
+        f.centroid = centre;
+        f.centroid[a] += 0.5 * side * cell[a];
+        f.inner = first + static_cast<LocalIndex>(i);
+        f.outer = found != at.end() ? first + found->second : -1;
+        faces.push_back(f);
+      }
+    }
+  }
+}
+
+// A tet mesh's cell faces: its tets' faces (geometry::TetFace).
+void tetFaces(const BodyParticles& made, LocalIndex first, std::vector<CellFace>& faces) {
+  const geometry::Discretisation& d = made.particles;
+  for (const geometry::TetFace& t : d.faces) {
+    const Vec3 &a = d.nodes[t.nodes[0]], &b = d.nodes[t.nodes[1]], &c = d.nodes[t.nodes[2]];
+    CellFace f;
+    f.area = 0.5 * (b - a).cross(c - a);
+    f.centroid = (a + b + c) / 3.0;
+    f.inner = first + t.inner;
+    f.outer = t.outer >= 0 ? first + t.outer : -1;
+    faces.push_back(f);
+  }
+}
+
+}  // namespace
+
+Model buildModel(const Problem& problem) {
+  Model model;
+  PointStore& points = model.points;
+  const double support = problem.settings.rkpm.support;
+  for (const BodySetup& setup : problem.bodies) {
+    KESSLER_VERIFY(setup.material != nullptr, "body '{}' has no material", setup.name);
+    const BodyParticles made = particlesOf(setup, problem.symmetry_axes, "RKPM");
+    const geometry::Discretisation& particles = made.particles;
+    const int body = static_cast<int>(model.bodies.size());
+    int material = -1;
+    for (std::size_t m = 0; m < model.materials.size(); ++m)
+      if (model.materials[m] == setup.material) material = static_cast<int>(m);
+    if (material < 0) {
+      material = static_cast<int>(model.materials.size());
+      model.materials.push_back(setup.material);
+    }
+    const auto first = static_cast<LocalIndex>(points.size());
+    const std::size_t n = particles.points.size();
+    points.resize(first + static_cast<LocalIndex>(n));
+    model.constrained.resize(points.x.size(), 0);
+    model.prescribed_v.resize(points.x.size(), Vec3::Zero());
+    const bool lattice = made.frame.cell.squaredNorm() > 0.0;
+    const double rho0 = setup.material->referenceDensity();
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t p = static_cast<std::size_t>(first) + i;
+      points.id[p] = static_cast<Index>(p);
+      points.body[p] = body;
+      points.x[p] = particles.points[i];
+      points.v[p] = setup.velocity_field ? setup.velocity_field(points.x[p]) : setup.velocity;
+      points.volume[p] = points.volume0[p] = particles.volumes[i];
+      points.mass[p] = rho0 * particles.volumes[i];
+      points.spacing0[p] = particles.spacings[i];
+      points.temperature[p] = 293.15;
+      model.cell_volume.push_back(lattice ? made.frame.cell.prod() : particles.volumes[i]);
+    }
+    if (lattice)
+      latticeFaces(made, first, model.faces);
+    else
+      tetFaces(made, first, model.faces);
+    for (const auto& [i, j] : particles.adjacency) {
+      const std::size_t a = static_cast<std::size_t>(first + i), b = static_cast<std::size_t>(first + j);
+      model.adjacency.push_back({points.id[a], points.id[b]});
+      model.adjacency_length0.push_back((points.x[b] - points.x[a]).norm());
+    }
+    model.bodies.push_back(BodyInfo{setup.name, material});
+    for (const LocalIndex i : fixedParticles(setup, made)) {
+      model.constrained[static_cast<std::size_t>(first + i)] = 7;
+      model.prescribed_v[static_cast<std::size_t>(first + i)].setZero();
+    }
+    log::info("  body {:<14} {:>9} particles (support {} spacings)", setup.name, n, support);
+  }
+  points.owned = points.size();
+  for (const PlaneConstraint& plane : problem.planes)
+    for (const LocalIndex p : particlesOnPlane(points, plane)) {
+      model.constrained[p] |= static_cast<std::uint8_t>(1u << plane.axis);
+      model.prescribed_v[p][plane.axis] = plane.velocity;
+    }
+  model.reference = points.x;
+  model.coefficient_x = points.x;
+  model.coefficient_v = points.v;
+  if (problem.prepare) problem.prepare(model);
+  return model;
+}
+
+}  // namespace kessler::rkpm

@@ -1,0 +1,242 @@
+// RKPM (solver/rkpm/, docs/theory.md §12): the reproducing kernels' consistency, the singular moment
+// matrix refused, the smoothed gradients' patch test on irregular particles (lattice cells, tet
+// cells, and across a symmetry plane), velocity collocation, and linear momentum.
+#include "../blocks.hpp"
+#include "approx/reproducing_kernel.hpp"
+#include "core/error.hpp"
+#include "geometry/structured_mesh.hpp"
+#include "solver/common/mirror.hpp"
+#include "solver/methods.hpp"
+#include "solver/rkpm/collocation.hpp"
+#include "solver/rkpm/kernels.hpp"
+#include "solver/rkpm/rkpm_method.hpp"
+#include "solver/rkpm/setup.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <string>
+
+namespace kessler::rkpm {
+namespace {
+
+constexpr double h = 1e-3;
+
+// The particles of `problem`'s single body, each moved up to a quarter spacing within its cell.
+Model jittered(const Problem& problem, unsigned seed = 3) {
+  Model model = buildModel(problem);
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> jitter(-0.25 * h, 0.25 * h);
+  for (Vec3& x : model.reference) {
+    const Vec3 moved = x + Vec3(jitter(random), jitter(random), jitter(random));
+    // A particle on a symmetry plane's side stays on it.
+    for (const int a : problem.symmetry_axes) x[a] = std::abs(moved[a]);
+    for (int a = 0; a < 3; ++a)
+      if (std::find(problem.symmetry_axes.begin(), problem.symmetry_axes.end(), a) == problem.symmetry_axes.end())
+        x[a] = moved[a];
+  }
+  model.points.x = model.reference;
+  return model;
+}
+
+Problem block(BodySetup body, std::vector<int> symmetry_axes = {}) {
+  Problem problem;
+  problem.method = "rkpm";
+  problem.settings.solver.end_time = 1e-3;
+  body.name = "block";
+  body.material = testing::aluminium();
+  problem.bodies = {body};
+  problem.symmetry_axes = std::move(symmetry_axes);
+  return problem;
+}
+
+Problem latticeBlock(std::vector<int> symmetry_axes = {}) {
+  BodySetup body;
+  body.mesh = geometry::MeshRequest{geometry::Box{Vec3(0, 0, 0), Vec3(5e-3, 4e-3, 3e-3)}, h};
+  return block(body, std::move(symmetry_axes));
+}
+
+Kernels kernelsOf(const Model& model, const Problem& problem) {
+  std::vector<double> support;
+  for (const double s : model.points.spacing0) support.push_back(problem.settings.rkpm.support * s);
+  const std::vector<std::string> names{"block"};
+  return buildKernels({model.reference, model.points.body, support, model.points.volume0, model.cell_volume,
+                       model.faces, names, problem.symmetry_axes});
+}
+
+TEST(ReproducingKernel, ReproducesLinearFieldsOnIrregularParticles) {
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> jitter(-0.3, 0.3), inside(0.5, 5.5);
+  std::vector<Vec3> particles;
+  for (int k = 0; k < 7; ++k)
+    for (int j = 0; j < 7; ++j)
+      for (int i = 0; i < 7; ++i) particles.push_back(Vec3(i + jitter(random), j + jitter(random), k + jitter(random)));
+  for (int trial = 0; trial < 50; ++trial) {
+    const Vec3 x(inside(random), inside(random), inside(random));
+    std::vector<rk::Sample> samples;
+    for (const Vec3& p : particles) samples.push_back({x - p, 2.0, 1.0});
+    std::vector<double> psi(samples.size());
+    ASSERT_GE(rk::shapeValues(samples, 1.0, psi), rk::min_rcond);
+    double sum = 0.0;
+    Vec3 position = Vec3::Zero();
+    for (std::size_t k = 0; k < particles.size(); ++k) {
+      sum += psi[k];
+      position += psi[k] * particles[k];
+    }
+    EXPECT_NEAR(sum, 1.0, 1e-12);
+    EXPECT_LT((position - x).norm(), 1e-12);
+  }
+}
+
+TEST(ReproducingKernel, RefusesASingularMomentMatrix) {
+  // Particles in one plane: no linear field across it can be reproduced.
+  std::vector<rk::Sample> samples;
+  for (int j = -2; j <= 2; ++j)
+    for (int i = -2; i <= 2; ++i) samples.push_back({Vec3(0.5 * i, 0.5 * j, 0.0), 2.0, 1.0});
+  std::vector<double> psi(samples.size(), -7.0);
+  EXPECT_LT(rk::shapeValues(samples, 1.0, psi), rk::min_rcond);
+  EXPECT_EQ(psi.front(), -7.0);  // untouched
+  // And the kernels name where: a support too small to reach four particles.
+  Problem problem = latticeBlock();
+  problem.settings.rkpm.support = 0.6;
+  const Model model = buildModel(problem);
+  try {
+    kernelsOf(model, problem);
+    FAIL() << "a singular moment matrix was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("singular at ("), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("body 'block'"), std::string::npos) << e.what();
+  }
+}
+
+// The smoothed gradients of a linear field are its gradient, in every cell (its surface's too), and the
+// kernels give the field at the particles: the patch test, on particles moved within their cells.
+void expectPatchTest(const Problem& problem, const Model& model, const Mat3& G, const Vec3& b) {
+  const Kernels k = kernelsOf(model, problem);
+  const auto n = static_cast<LocalIndex>(model.reference.size());
+  double worst_gradient = 0.0, worst_value = 0.0;
+  for (LocalIndex j = 0; j < n; ++j) {
+    Mat3 gradient = Mat3::Zero();
+    Vec3 sum = Vec3::Zero();
+    for (LocalIndex e = k.gradient.offset[j]; e < k.gradient.offset[j + 1]; ++e) {
+      const auto s = static_cast<std::size_t>(e);
+      const Vec3 u = G * model.reference[static_cast<std::size_t>(k.gradient.column[s])] + b;
+      gradient += reflect(u, k.gradient.mirror[s]) * k.gradient.value[s].transpose();
+      sum += k.gradient.value[s];
+    }
+    worst_gradient = std::max(worst_gradient, (gradient - G).norm() / G.norm());
+    EXPECT_LT(sum.norm() * h, 1e-12);  // the gradient of a constant is zero
+    Vec3 value = Vec3::Zero();
+    for (LocalIndex e = k.psi.offset[j]; e < k.psi.offset[j + 1]; ++e) {
+      const auto s = static_cast<std::size_t>(e);
+      value += k.psi.value[s] *
+               reflect(Vec3(G * model.reference[static_cast<std::size_t>(k.psi.column[s])] + b), k.psi.mirror[s]);
+    }
+    worst_value = std::max(worst_value, (value - (G * model.reference[j] + b)).norm());
+  }
+  EXPECT_LT(worst_gradient, 1e-10);
+  EXPECT_LT(worst_value, 1e-12);
+}
+
+TEST(Rkpm, PatchTestOnLatticeCells) {
+  Mat3 G;
+  G << 0.1, -0.03, 0.02, 0.05, -0.08, 0.01, -0.04, 0.06, 0.03;
+  const Problem problem = latticeBlock();
+  expectPatchTest(problem, jittered(problem), G, Vec3(1e-3, 2e-3, 3e-3));
+}
+
+TEST(Rkpm, PatchTestOnTetCells) {
+  Mat3 G;
+  G << 0.1, -0.03, 0.02, 0.05, -0.08, 0.01, -0.04, 0.06, 0.03;
+  BodySetup body;
+  body.mesh =
+      geometry::discretise(geometry::structuredBoxMesh(geometry::Box{Vec3::Zero(), Vec3(4e-3, 3e-3, 3e-3)}, {4, 3, 3}));
+  const Problem problem = block(body);
+  expectPatchTest(problem, buildModel(problem), G, Vec3(1e-3, 2e-3, 3e-3));
+}
+
+TEST(Rkpm, PatchTestAcrossSymmetryPlanes) {
+  // A field the mirror images share (u_x odd in x and even in y, u_y the other way, u_z even in both):
+  // a diagonal gradient.
+  const Mat3 G = Vec3(0.1, -0.08, 0.03).asDiagonal();
+  const Problem problem = latticeBlock({0, 1});
+  expectPatchTest(problem, jittered(problem), G, Vec3(0.0, 0.0, 3e-3));
+}
+
+// The prescribed velocities hold at their particles after collocation, to round-off, whatever the
+// other coefficients are.
+TEST(Rkpm, VelocityCollocationHoldsThePrescribedVelocity) {
+  const Problem problem = latticeBlock({0});
+  const Model model = jittered(problem);
+  const Kernels k = kernelsOf(model, problem);
+  const auto n = static_cast<LocalIndex>(model.reference.size());
+  std::vector<std::uint8_t> constrained(static_cast<std::size_t>(n), 0);
+  std::vector<Vec3> prescribed(static_cast<std::size_t>(n), Vec3::Zero());
+  for (LocalIndex p = 0; p < n; ++p) {
+    const Vec3& x = model.reference[p];
+    if (x.z() < h) {  // the bottom layer: every component, varying over it
+      constrained[p] = 7;
+      prescribed[p] = Vec3(3.0 + 1e3 * x.y(), -2.0 * x.x() * 1e3, 0.5);
+    } else if (x.y() > 3e-3) {  // the far side: its normal component only
+      constrained[p] = 2;
+      prescribed[p].y() = 1.5;
+    }
+  }
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> speed(-100.0, 100.0);
+  std::vector<Vec3> v(static_cast<std::size_t>(n));
+  for (Vec3& c : v) c = Vec3(speed(random), speed(random), speed(random));
+  const VelocityCollocation collocation(k.psi, constrained);
+  collocation.impose(prescribed, v);
+  std::vector<Vec3> at(static_cast<std::size_t>(n));
+  VelocityCollocation::interpolate(k.psi, v, at);
+  double worst = 0.0;
+  for (LocalIndex p = 0; p < n; ++p)
+    for (int a = 0; a < 3; ++a)
+      if (constrained[p] & (1u << a)) worst = std::max(worst, std::abs(at[p][a] - prescribed[p][a]));
+  EXPECT_LT(worst, 1e-12 * 100.0);  // relative to the speeds
+}
+
+// A free block with a linear velocity field: every particle's first deformation gradient is I + dt G
+// (the patch test through the method), and with random velocities the forces, whose smoothed
+// gradients sum to zero over each cell, keep the linear momentum to round-off.
+TEST(Rkpm, FirstStepOfALinearFieldAndMomentum) {
+  Mat3 G;
+  G << 100.0, -30.0, 20.0, 50.0, -80.0, 10.0, -40.0, 60.0, 30.0;
+  Problem problem = latticeBlock();
+  problem.bodies[0].velocity_field = [&](const Vec3& x) { return Vec3(G * x + Vec3(1.0, 2.0, 3.0)); };
+  {
+    const std::unique_ptr<Method> method = makeMethod(problem);
+    method->initialise();
+    method->step();
+    const double dt = method->clock().dt_last;
+    const PointStore& points = method->state().points;
+    double worst = 0.0;
+    for (LocalIndex p = 0; p < points.owned; ++p)
+      worst = std::max(worst, (points.F[p] - Mat3::Identity() - dt * G).norm() / (dt * G.norm()));
+    EXPECT_LT(worst, 1e-9);
+  }
+  std::mt19937 random(9);
+  std::uniform_real_distribution<double> speed(-50.0, 50.0);
+  problem.bodies[0].velocity_field = [&](const Vec3&) { return Vec3(speed(random), speed(random), speed(random)); };
+  problem.settings.solver.end_time = 2e-6;
+  const std::unique_ptr<Method> method = makeMethod(problem);
+  method->initialise();
+  const Vec3 before = method->energies().momentum;
+  while (!method->finished()) method->step();
+  const Vec3 after = method->energies().momentum;
+  EXPECT_GT(method->clock().steps, 10);
+  const double scale = method->energies().kinetic > 0.0 ? std::sqrt(2.0 * 0.035 * method->energies().kinetic) : 1.0;
+  EXPECT_LT((after - before).norm(), 1e-12 * scale)
+      << "momentum before " << before.transpose() << ", after " << after.transpose();
+}
+
+TEST(Rkpm, RefusesBodiesThatWouldHaveToMeet) {
+  Problem problem = latticeBlock();
+  problem.bodies.push_back(problem.bodies[0]);
+  problem.bodies[1].name = "other";
+  EXPECT_THROW(makeMethod(problem), InputError);
+}
+
+}  // namespace
+}  // namespace kessler::rkpm
