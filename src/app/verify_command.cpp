@@ -105,7 +105,7 @@ void addVerifyCommand(CLI::App& app) {
   cmd->add_option("names", options->names, "Problems to run (default: all)");
   cmd->add_flag("--json", options->json, "Print one JSON object per problem instead of a table");
   cmd->add_flag("--list", options->list, "List the problems and exit");
-  cmd->add_option("--method", options->method, "The method the problems run (solver.method): otm or sph")
+  cmd->add_option("--method", options->method, "The method the problems run (solver.method): otm, sph or rkpm")
       ->capture_default_str();
   cmd->callback([options] { runVerify(*options); });
 }

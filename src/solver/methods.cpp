@@ -23,13 +23,8 @@ void requireKnown(const Problem& problem) {
                             fmt::join(known, ", ")));
   if (problem.method == "sph" && problem.settings.solver.contact.sliding())
     throw InputError(
-        "solver.contact: a sliding contact is OTM's for now; SPH's bodies meet through their particle "
+        "solver.contact: a sliding contact is OTM's and RKPM's for now; SPH's bodies meet through their particle "
         "pairs (give type: seizing, or solver.method: otm)");
-  if (problem.method == "rkpm" && problem.bodies.size() > 1)
-    throw InputError(fmt::format(
-        "solver.method: RKPM's bodies do not meet yet (each body has its own kernels, and the contact between "
-        "them is still to come); this problem has {} bodies: give solver.method: otm or sph",
-        problem.bodies.size()));
 }
 
 void refuseRanks(const parallel::Communicator* ranks) {

@@ -1,6 +1,6 @@
 #pragma once
 // The materials run body by body over the ranges of a method that keeps each body's points together
-// (bodyRanges): OTM and SPH call the laws through these.
+// (bodyRanges): OTM, SPH and RKPM call the laws through these.
 #include "solver/common/particle_state.hpp"
 
 #include <span>

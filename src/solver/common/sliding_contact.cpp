@@ -14,7 +14,7 @@ namespace {
 struct Near {
   LocalIndex triangle = 0;
   Vec3 normal = Vec3::Zero();      // unit, out of the master body
-  double depth = 0.0;              // the slave's height above the triangle's plane (< 0: below)
+  double depth = 0.0;              // the slave's height above the triangle's plane less the gaps (< 0: below)
   double longest = 0.0;            // the triangle's longest edge
   std::array<double, 3> weight{};  // barycentric coordinates of the slave's projection
   double distance = 0.0;           // from the slave to the nearest point of the triangle
@@ -85,14 +85,17 @@ SlidingReport SlidingContact::apply(const ContactSurface& surface, const Sliding
         Near item;
         item.triangle = t;
         item.normal = n;
-        item.depth = (ys - a).dot(n);
+        const double height = (ys - a).dot(n);
         item.longest = std::max({(b - a).norm(), (d - b).norm(), (a - d).norm()});
-        const Vec3 p = ys - item.depth * n;
+        const Vec3 p = ys - height * n;
         item.weight = {(b - p).cross(d - p).dot(n) / twice_area, (d - p).cross(a - p).dot(n) / twice_area,
                        (a - p).cross(b - p).dot(n) / twice_area};
+        item.depth = c.gap.empty() ? height
+                                   : height - (c.gap[s] + item.weight[0] * c.gap[v[0]] + item.weight[1] * c.gap[v[1]] +
+                                               item.weight[2] * c.gap[v[2]]);
         item.over = *std::min_element(item.weight.begin(), item.weight.end()) >= -1e-12;
         item.distance =
-            item.over ? std::abs(item.depth)
+            item.over ? std::abs(height)
                       : std::min({segmentDistance(ys, a, b), segmentDistance(ys, b, d), segmentDistance(ys, d, a)});
         near.push_back(item);
       });
@@ -118,7 +121,7 @@ SlidingReport SlidingContact::apply(const ContactSurface& surface, const Sliding
         for (int i = 0; i < 3; ++i) w += face->weight[i] * face->weight[i] * inverseMass(c, v[i]);
         if (!(w > 0.0)) continue;  // slave and triangle all held
         // Back onto the triangle, the centre of mass kept.
-        const double P = -face->depth / w;
+        const double P = correct_positions_ ? -face->depth / w : 0.0;
         c.du[s] += freePart(P * inverse_s * n, c.constrained[s]);
         for (int i = 0; i < 3; ++i)
           c.du[v[i]] -= freePart(face->weight[i] * P * inverseMass(c, v[i]) * n, c.constrained[v[i]]);

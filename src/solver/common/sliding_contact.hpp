@@ -43,7 +43,9 @@ struct ContactSurface {
 // The carriers a sliding contact moves: positions at the start of the step, the step's displacement
 // and the velocity (both changed), masses, bodies, the components held by a boundary (bit i:
 // component i), which the contact leaves alone, and the kinetic energy the contact took, per
-// carrier (added to, J).
+// carrier (added to, J). `gap`, if given: per carrier, how far its body's surface lies beyond it
+// (a particle method's: half a spacing; OTM's nodes are on it, and give none); a slave then touches
+// a triangle when its height above it falls below its own gap and the triangle's (by N_i).
 struct SlidingCarriers {
   std::span<const Vec3> x;
   std::span<Vec3> du;
@@ -52,6 +54,7 @@ struct SlidingCarriers {
   std::span<const std::int32_t> body;
   std::span<const std::uint8_t> constrained;
   std::span<double> heat;
+  std::span<const double> gap = {};
 };
 
 struct SlidingReport {
@@ -63,7 +66,12 @@ struct SlidingReport {
 
 class SlidingContact {
  public:
-  explicit SlidingContact(double friction) : friction_(friction) {}
+  // Without `correct_positions`, a slave found below a master triangle keeps its place and only the
+  // velocity exchanges act (a velocity-only kinematic constraint): moving it back creates strain
+  // energy that no force paid for, which a method whose surface carriers are not its material's
+  // surface (RKPM's coefficients, docs/theory.md §12) cannot afford.
+  explicit SlidingContact(double friction, bool correct_positions = true)
+      : friction_(friction), correct_positions_(correct_positions) {}
 
   // Adjusts du and v of the carriers so that no slave ends the step inside a master triangle.
   // `bodies`: the number of bodies, for the touching record.
@@ -74,6 +82,7 @@ class SlidingContact {
 
  private:
   double friction_ = 0.0;
+  bool correct_positions_ = true;
 };
 
 }  // namespace kessler

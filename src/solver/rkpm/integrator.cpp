@@ -43,7 +43,8 @@ Integrator::Integrator(Model& model, const Settings& settings)
     : model_(model),
       settings_(settings),
       erosion_(settings.solver.erosion_radius),
-      release_(settings.solver.erosion_radius) {
+      release_(settings.solver.erosion_radius),
+      contact_(settings.solver.contact.friction, false) {
   KESSLER_VERIFY(settings.solver.cfl > 0.0 && settings.solver.cfl <= 1.0, "cfl must lie in (0, 1], got {}",
                  settings.solver.cfl);
   KESSLER_VERIFY(settings.solver.end_time > 0.0, "end_time must be positive, got {}", settings.solver.end_time);
@@ -90,6 +91,15 @@ void Integrator::prepare() {
   acceleration_.assign(n, Vec3::Zero());
   volume_rate_.assign(n, 0.0);
   piola_.assign(n, Mat3::Zero());
+  du_.assign(n, Vec3::Zero());
+  surface_.triangles = model_.surface;
+  surface_.slaves.clear();
+  for (const auto& t : surface_.triangles) surface_.slaves.insert(surface_.slaves.end(), t.begin(), t.end());
+  std::sort(surface_.slaves.begin(), surface_.slaves.end());
+  surface_.slaves.erase(std::unique(surface_.slaves.begin(), surface_.slaves.end()), surface_.slaves.end());
+  gap_.resize(n);
+  for (std::size_t p = 0; p < n; ++p) gap_[p] = 0.5 * points.spacing0[p];
+  contact_heat_.assign(n, 0.0);
 }
 
 void Integrator::initialise() {
@@ -120,9 +130,10 @@ void Integrator::initialise() {
                                                   settings_.solver.cfl, [&](LocalIndex p) { return stepLength(p); });
 }
 
-void Integrator::restore(const Clock& clock) {
+void Integrator::restore(const Clock& clock, double contact_energy) {
   prepare();
   clock_ = clock;
+  contact_energy_ = contact_energy;
   forces();
 }
 
@@ -133,6 +144,13 @@ void Integrator::step() {
     {
       ScopedPhase phase(timers_, "point update");
       kick(0.5 * (clock_.dt_last + dt), dt);
+    }
+    if (!surface_.triangles.empty()) {
+      ScopedPhase phase(timers_, "contact");
+      slide();
+    }
+    {
+      ScopedPhase phase(timers_, "point update");
       deform(dt);
     }
     {
@@ -171,13 +189,36 @@ void Integrator::kick(double dt_kick, double dt) {
     imposeBoundaries(0, Vec3::Zero(), settings_.walls, model_.coefficient_x[i], dt, v[i]);
   }
   collocation_.impose(model_.prescribed_v, v);
+#pragma omp parallel for schedule(static)
+  for (LocalIndex i = 0; i < n; ++i) du_[i] = dt * v[i];
+}
+
+// The sliding contact on the coefficients of the bodies' surface particles, which stand for the
+// particles (as the walls' do; docs/theory.md §12): velocity exchanges only, no position correction.
+// Acting on the coefficients with their lumped masses, it conserves the particles' linear momentum
+// exactly (sum_I m_I vhat_I = sum_K m_K v_K); the energy it takes is booked apart.
+void Integrator::slide() {
+  const PointStore& points = model_.points;
+  std::fill(contact_heat_.begin(), contact_heat_.end(), 0.0);
+  const SlidingCarriers carriers{
+      model_.coefficient_x, du_, model_.coefficient_v, mass_, points.body, model_.constrained, contact_heat_, gap_};
+  const SlidingReport report = contact_.apply(surface_, carriers, model_.bodies.size());
+  for (std::size_t b = 0; b < report.touching.size(); ++b)
+    for (std::size_t o = 0; o < report.touching.size(); ++o)
+      if (report.touching[b] & (std::uint64_t{1} << o)) {
+        model_.bodies[b].touched |= std::uint64_t{1} << o;
+        model_.bodies[o].touched |= std::uint64_t{1} << b;
+      }
+  double heat = 0.0;
+  for (const double q : contact_heat_) heat += q;
+  contact_energy_ += heat;
 }
 
 void Integrator::deform(double dt) {
   PointStore& points = model_.points;
   const LocalIndex n = points.owned;
 #pragma omp parallel for schedule(static)
-  for (LocalIndex i = 0; i < n; ++i) model_.coefficient_x[i] += dt * model_.coefficient_v[i];
+  for (LocalIndex i = 0; i < n; ++i) model_.coefficient_x[i] += du_[i];
   const Table<Vec3>& g = kernels_.gradient;
   LocalIndex bad = n;
 #pragma omp parallel for schedule(static) reduction(min : bad)
@@ -284,7 +325,7 @@ double Integrator::stepLength(LocalIndex p) const {
 }
 
 Energies Integrator::energies() const {
-  Energies e = pointEnergies(model_.points, 0.0);
+  Energies e = pointEnergies(model_.points, contact_energy_);
   double kinetic = 0.0;
   Vec3 momentum = Vec3::Zero();
   for (std::size_t i = 0; i < mass_.size(); ++i) {

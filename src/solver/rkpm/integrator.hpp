@@ -2,7 +2,8 @@
 // RKPM's time step (docs/theory.md §12): a total-Lagrangian reproducing kernel particle method with
 // stabilised conforming nodal integration, central differences in time.
 //   1. kick: vhat += dt_avg f / m (the last step's forces, lumped masses), the walls, then velocity
-//      collocation of the prescribed components (solver/rkpm/collocation.hpp);
+//      collocation of the prescribed components (solver/rkpm/collocation.hpp); between bodies, the
+//      sliding contact on their surface particles' coefficients (solver/rkpm/surface.hpp);
 //   2. drift xhat += dt vhat; each particle's deformation gradient from the coefficients,
 //      F_J = I + sum_I (xhat_I - X_I) (x) grad~ Psi_I(X_J), and dF = F F_old^-1;
 //   3. the material update (the shared laws, from F, dF and the volume), with the laws' bulk
@@ -17,6 +18,7 @@
 #include "solver/common/method.hpp"
 #include "solver/common/release.hpp"
 #include "solver/common/settings.hpp"
+#include "solver/common/sliding_contact.hpp"
 #include "solver/common/walls.hpp"
 #include "solver/rkpm/collocation.hpp"
 #include "solver/rkpm/kernels.hpp"
@@ -28,7 +30,7 @@
 namespace kessler::rkpm {
 
 struct Settings {
-  SolverSettings solver;
+  SolverSettings solver;  // its contact's friction is the sliding contact's (RKPM has no seizing contact)
   RkpmOptions rkpm;
   std::vector<RigidWall> walls;
   std::vector<int> symmetry_axes;
@@ -41,7 +43,7 @@ class Integrator {
   // and time step of a new run.
   void initialise();
   // A restored run: the kernels of its reference configuration and the forces of its state.
-  void restore(const Clock& clock);
+  void restore(const Clock& clock, double contact_energy);
   void step();
 
   bool finished() const { return clock_.time >= settings_.solver.end_time * (1.0 - 1e-12); }
@@ -55,10 +57,13 @@ class Integrator {
   const Kernels& kernels() const { return kernels_; }
   const std::vector<double>& masses() const { return mass_; }
   double meanNeighbours() const;
+  // The kinetic energy the sliding contact has taken so far, J (booked apart, as stabilisation energy).
+  double contactEnergy() const { return contact_energy_; }
 
  private:
   void prepare();
   void kick(double dt_kick, double dt);
+  void slide();
   void deform(double dt);
   void updateMaterials(double dt);
   void place();
@@ -79,6 +84,13 @@ class Integrator {
   std::vector<Vec3> acceleration_;
   std::vector<double> volume_rate_;  // ln det dF / dt of the last step
   std::vector<Mat3> piola_;          // V0_J P_J
+  std::vector<Vec3> du_;             // the coefficients' move over the step
+  // The sliding contact between bodies: its surface, each particle's gap (half its spacing: its
+  // cell's reach beyond it), the energy it took in a step per particle, and in all.
+  ContactSurface surface_;
+  SlidingContact contact_;
+  std::vector<double> gap_, contact_heat_;
+  double contact_energy_ = 0.0;
 };
 
 }  // namespace kessler::rkpm

@@ -7,6 +7,7 @@
 #include "solver/common/particle_state.hpp"
 #include "solver/rkpm/kernels.hpp"
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -22,6 +23,9 @@ struct Model : ParticleState {
   std::vector<Vec3> coefficient_v;  // vhat_I
   std::vector<double> cell_volume;  // each particle's cell (its nodal integration domain), m^3
   std::vector<CellFace> faces;      // the cells' faces, each once
+  // The bodies' surfaces for the sliding contact between them (solver/rkpm/surface.hpp): triangles
+  // of particles, counter-clockwise seen from outside; none for a single body.
+  std::vector<std::array<LocalIndex, 3>> surface;
 };
 
 }  // namespace kessler::rkpm

@@ -55,6 +55,7 @@ void RkpmMethod::save(StateWriter& out) const {
   out.scalar("rkpm_dt_next", c.dt_next);
   out.scalar("rkpm_dt_initial", c.dt_initial);
   out.scalar("rkpm_steps", static_cast<std::int64_t>(c.steps));
+  out.scalar("rkpm_contact_energy", integrator_.contactEnergy());
   out.group("/rkpm");
   out.array("/rkpm/constrained", model_.constrained);
   out.array("/rkpm/prescribed_v", model_.prescribed_v);
@@ -73,6 +74,10 @@ void RkpmMethod::save(StateWriter& out) const {
   out.scalar("rkpm_faces", static_cast<std::int64_t>(model_.faces.size()));
   out.array("/rkpm/face_geometry", geometry);
   out.array("/rkpm/face_sides", sides);
+  std::vector<std::int64_t> surface;
+  for (const auto& t : model_.surface) surface.insert(surface.end(), t.begin(), t.end());
+  out.scalar("rkpm_surface_triangles", static_cast<std::int64_t>(model_.surface.size()));
+  out.array("/rkpm/surface", surface);
 }
 
 void RkpmMethod::load(const StateReader& in) {
@@ -96,8 +101,21 @@ void RkpmMethod::load(const StateReader& in) {
       in.fail(fmt::format("/rkpm/face_sides: face {} names particles {} and {} of {}", f, inner, outer, n));
     model_.faces[f] = {geometry[2 * f], geometry[2 * f + 1], inner, outer};
   }
+  const std::int64_t triangles = in.intScalar("rkpm_surface_triangles");
+  if (triangles < 0) in.fail(fmt::format("rkpm_surface_triangles: {} triangles", triangles));
+  std::vector<std::int64_t> surface;
+  in.array("/rkpm/surface", surface, 3 * static_cast<std::size_t>(triangles));
+  model_.surface.resize(static_cast<std::size_t>(triangles));
+  for (std::size_t t = 0; t < model_.surface.size(); ++t)
+    for (std::size_t v = 0; v < 3; ++v) {
+      const std::int64_t p = surface[3 * t + v];
+      if (p < 0 || p >= static_cast<std::int64_t>(n))
+        in.fail(fmt::format("/rkpm/surface: triangle {} names particle {} of {}", t, p, n));
+      model_.surface[t][v] = static_cast<LocalIndex>(p);
+    }
   integrator_.restore(Clock{in.doubleScalar("rkpm_time"), in.intScalar("rkpm_steps"), in.doubleScalar("rkpm_dt_last"),
-                            in.doubleScalar("rkpm_dt_next"), in.doubleScalar("rkpm_dt_initial")});
+                            in.doubleScalar("rkpm_dt_next"), in.doubleScalar("rkpm_dt_initial")},
+                      in.doubleScalar("rkpm_contact_energy"));
 }
 
 }  // namespace kessler::rkpm

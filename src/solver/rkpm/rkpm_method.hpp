@@ -1,6 +1,7 @@
 #pragma once
 // RKPM as a Method (solver/common/method.hpp): its particles, its integrator and its health checks.
-// It runs on one process, each body on its own kernels; bodies do not meet yet (docs/theory.md §12).
+// It runs on one process, each body on its own kernels; bodies meet through the sliding contact
+// (docs/theory.md §12).
 #include "solver/common/method.hpp"
 #include "solver/common/point_diagnostics.hpp"
 #include "solver/common/problem.hpp"

@@ -3,6 +3,9 @@
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "solver/common/particle_bodies.hpp"
+#include "solver/rkpm/surface.hpp"
+
+#include <fmt/format.h>
 
 #include <map>
 
@@ -95,6 +98,16 @@ Model buildModel(const Problem& problem) {
       latticeFaces(made, first, model.faces);
     else
       tetFaces(made, first, model.faces);
+    if (problem.bodies.size() > 1) {
+      if (!lattice)
+        throw InputError(fmt::format(
+            "body '{}': RKPM's bodies meet through a sliding contact on their particle surfaces, which a lattice "
+            "body has (a shape or a structured box); a tet mesh's particles have none yet (give solver.method: otm "
+            "or sph)",
+            setup.name));
+      const std::vector<std::array<LocalIndex, 3>> sheet = latticeSurface(made.element, first);
+      model.surface.insert(model.surface.end(), sheet.begin(), sheet.end());
+    }
     for (const auto& [i, j] : particles.adjacency) {
       const std::size_t a = static_cast<std::size_t>(first + i), b = static_cast<std::size_t>(first + j);
       model.adjacency.push_back({points.id[a], points.id[b]});
@@ -108,6 +121,10 @@ Model buildModel(const Problem& problem) {
     log::info("  body {:<14} {:>9} particles (support {} spacings)", setup.name, n, support);
   }
   points.owned = points.size();
+  if (problem.bodies.size() > 1 && !problem.settings.solver.contact.sliding())
+    log::info(
+        "  RKPM's bodies meet through the sliding contact, without friction (it has no seizing contact; "
+        "solver.contact: {{ type: sliding, friction: mu }} sets a friction)");
   for (const PlaneConstraint& plane : problem.planes)
     for (const LocalIndex p : particlesOnPlane(points, plane)) {
       model.constrained[p] |= static_cast<std::uint8_t>(1u << plane.axis);
