@@ -7,6 +7,7 @@
 // root of its volume as its spacing.
 #include "geometry/mesh.hpp"
 #include "particles/store.hpp"
+#include "solver/common/particle_state.hpp"
 #include "solver/common/problem.hpp"
 
 #include <array>
@@ -30,6 +31,11 @@ struct BodyParticles {
 // Throws InputError for a body that cannot be filled (thinner than two particles, say), naming it.
 // `method` names the method in the refusal of refine (a lattice has one particle size).
 BodyParticles particlesOf(const BodySetup& setup, const std::vector<int>& symmetry_axes, const char* method);
+
+// Appends a body's particles to `state`: its material (the one an earlier body has, if the same), the
+// particles as points (position, initial velocity, volume, mass, spacing, room temperature), their
+// adjacency, and the body. Returns the index of its first particle.
+LocalIndex addParticleBody(ParticleState& state, const BodySetup& setup, const BodyParticles& made);
 
 // The particles of a body built from `setup` whose elements lie on its fixed faces (indices into
 // `particles`; none for a body given as a Discretisation).

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace kessler {
 
@@ -65,11 +66,38 @@ SlidingReport SlidingContact::apply(const ContactSurface& surface, const Sliding
   // within the longest edge, and the triangles around it within two of their centroids.
   const double reach = 2.0 * longest;
 
+  // The slaves that may meet another body's triangle: within reach of that body's triangles' box,
+  // with a margin of two longest edges for what the corrections move. The others are passed over in
+  // every visit.
+  std::vector<std::pair<Vec3, Vec3>> box;  // per body
+  for (const auto& v : triangles)
+    for (const LocalIndex a : v) {
+      const auto b = static_cast<std::size_t>(c.body[a]);
+      if (box.size() <= b)
+        box.resize(b + 1, {Vec3::Constant(std::numeric_limits<double>::infinity()),
+                           Vec3::Constant(-std::numeric_limits<double>::infinity())});
+      box[b].first = box[b].first.cwiseMin(y(a));
+      box[b].second = box[b].second.cwiseMax(y(a));
+    }
+  const double margin = reach + 2.0 * longest;
+  std::vector<LocalIndex> slaves;
+  for (const LocalIndex s : surface.slaves) {
+    if (!(c.mass[s] > 0.0)) continue;
+    const Vec3 ys = y(s);
+    for (std::size_t b = 0; b < box.size(); ++b) {
+      if (static_cast<std::int32_t>(b) == c.body[s]) continue;
+      const Vec3 outside = (box[b].first - ys).cwiseMax(ys - box[b].second).cwiseMax(0.0);
+      if (outside.norm() <= margin) {
+        slaves.push_back(s);
+        break;
+      }
+    }
+  }
+
   std::vector<Near> near;
   for (int visit = 0; visit < visits; ++visit) {
     const bool measure_only = visit == visits - 1;
-    for (const LocalIndex s : surface.slaves) {
-      if (!(c.mass[s] > 0.0)) continue;
+    for (const LocalIndex s : slaves) {
       const Vec3 ys = y(s);
       near.clear();
       cells.forEachWithin(ys, reach, [&](LocalIndex t, double) {

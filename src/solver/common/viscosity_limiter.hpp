@@ -1,7 +1,5 @@
 #pragma once
 // The limiter of the laws' artificial bulk viscosity (material/impact_material.cpp; docs/theory.md §5).
-#include <algorithm>
-
 namespace kessler {
 
 // Christensen's limiter for one point from the ratios r_a = ln j_a / ln j_p of the volume changes
@@ -9,8 +7,6 @@ namespace kessler {
 // step (compression only): phi = clamp(min(mean r, 2 min r), 0, 1). `mean_ratio` is the
 // shape-function-weighted mean, `min_ratio` the smallest. A linear velocity field gives ratios near 1
 // and no viscosity; a shock, where the point compresses far more than those beside it, small ones.
-inline double christensenLimiter(double mean_ratio, double min_ratio) {
-  return std::clamp(std::min(mean_ratio, 2.0 * min_ratio), 0.0, 1.0);
-}
+double christensenLimiter(double mean_ratio, double min_ratio);
 
 }  // namespace kessler

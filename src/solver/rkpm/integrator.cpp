@@ -92,11 +92,6 @@ void Integrator::prepare() {
   volume_rate_.assign(n, 0.0);
   piola_.assign(n, Mat3::Zero());
   du_.assign(n, Vec3::Zero());
-  surface_.triangles = model_.surface;
-  surface_.slaves.clear();
-  for (const auto& t : surface_.triangles) surface_.slaves.insert(surface_.slaves.end(), t.begin(), t.end());
-  std::sort(surface_.slaves.begin(), surface_.slaves.end());
-  surface_.slaves.erase(std::unique(surface_.slaves.begin(), surface_.slaves.end()), surface_.slaves.end());
   gap_.resize(n);
   for (std::size_t p = 0; p < n; ++p) gap_[p] = 0.5 * points.spacing0[p];
   contact_heat_.assign(n, 0.0);
@@ -145,7 +140,7 @@ void Integrator::step() {
       ScopedPhase phase(timers_, "point update");
       kick(0.5 * (clock_.dt_last + dt), dt);
     }
-    if (!surface_.triangles.empty()) {
+    if (!model_.surface.empty()) {
       ScopedPhase phase(timers_, "contact");
       slide();
     }
@@ -199,6 +194,25 @@ void Integrator::kick(double dt_kick, double dt) {
 // exactly (sum_I m_I vhat_I = sum_K m_K v_K); the energy it takes is booked apart.
 void Integrator::slide() {
   const PointStore& points = model_.points;
+  // The surface now: a triangle of debris, or stretched beyond three spacings (its particles have
+  // parted: the surface is torn there), is not surface.
+  surface_.triangles.clear();
+  surface_.slaves.clear();
+  for (const auto& t : model_.surface) {
+    double longest = 0.0, spacing = 0.0;
+    bool debris = false;
+    for (int e = 0; e < 3; ++e) {
+      const LocalIndex a = t[static_cast<std::size_t>(e)], b = t[static_cast<std::size_t>((e + 1) % 3)];
+      longest = std::max(longest, (model_.coefficient_x[a] - model_.coefficient_x[b]).norm());
+      spacing = std::max(spacing, points.spacing0[a]);
+      debris = debris || points.debris(a);
+    }
+    if (debris || longest > 3.0 * spacing) continue;
+    surface_.triangles.push_back(t);
+    surface_.slaves.insert(surface_.slaves.end(), t.begin(), t.end());
+  }
+  std::sort(surface_.slaves.begin(), surface_.slaves.end());
+  surface_.slaves.erase(std::unique(surface_.slaves.begin(), surface_.slaves.end()), surface_.slaves.end());
   std::fill(contact_heat_.begin(), contact_heat_.end(), 0.0);
   const SlidingCarriers carriers{
       model_.coefficient_x, du_, model_.coefficient_v, mass_, points.body, model_.constrained, contact_heat_, gap_};

@@ -64,36 +64,15 @@ Model buildModel(const Problem& problem) {
   PointStore& points = model.points;
   const double support = problem.settings.rkpm.support;
   for (const BodySetup& setup : problem.bodies) {
-    KESSLER_VERIFY(setup.material != nullptr, "body '{}' has no material", setup.name);
     const BodyParticles made = particlesOf(setup, problem.symmetry_axes, "RKPM");
     const geometry::Discretisation& particles = made.particles;
-    const int body = static_cast<int>(model.bodies.size());
-    int material = -1;
-    for (std::size_t m = 0; m < model.materials.size(); ++m)
-      if (model.materials[m] == setup.material) material = static_cast<int>(m);
-    if (material < 0) {
-      material = static_cast<int>(model.materials.size());
-      model.materials.push_back(setup.material);
-    }
-    const auto first = static_cast<LocalIndex>(points.size());
+    const LocalIndex first = addParticleBody(model, setup, made);
     const std::size_t n = particles.points.size();
-    points.resize(first + static_cast<LocalIndex>(n));
     model.constrained.resize(points.x.size(), 0);
     model.prescribed_v.resize(points.x.size(), Vec3::Zero());
     const bool lattice = made.frame.cell.squaredNorm() > 0.0;
-    const double rho0 = setup.material->referenceDensity();
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::size_t p = static_cast<std::size_t>(first) + i;
-      points.id[p] = static_cast<Index>(p);
-      points.body[p] = body;
-      points.x[p] = particles.points[i];
-      points.v[p] = setup.velocity_field ? setup.velocity_field(points.x[p]) : setup.velocity;
-      points.volume[p] = points.volume0[p] = particles.volumes[i];
-      points.mass[p] = rho0 * particles.volumes[i];
-      points.spacing0[p] = particles.spacings[i];
-      points.temperature[p] = 293.15;
+    for (std::size_t i = 0; i < n; ++i)
       model.cell_volume.push_back(lattice ? made.frame.cell.prod() : particles.volumes[i]);
-    }
     if (lattice)
       latticeFaces(made, first, model.faces);
     else
@@ -108,12 +87,6 @@ Model buildModel(const Problem& problem) {
       const std::vector<std::array<LocalIndex, 3>> sheet = latticeSurface(made.element, first);
       model.surface.insert(model.surface.end(), sheet.begin(), sheet.end());
     }
-    for (const auto& [i, j] : particles.adjacency) {
-      const std::size_t a = static_cast<std::size_t>(first + i), b = static_cast<std::size_t>(first + j);
-      model.adjacency.push_back({points.id[a], points.id[b]});
-      model.adjacency_length0.push_back((points.x[b] - points.x[a]).norm());
-    }
-    model.bodies.push_back(BodyInfo{setup.name, material});
     for (const LocalIndex i : fixedParticles(setup, made)) {
       model.constrained[static_cast<std::size_t>(first + i)] = 7;
       model.prescribed_v[static_cast<std::size_t>(first + i)].setZero();

@@ -6,11 +6,13 @@
 #include "core/error.hpp"
 #include "geometry/structured_mesh.hpp"
 #include "solver/common/mirror.hpp"
+#include "solver/common/particle_bodies.hpp"
 #include "solver/methods.hpp"
 #include "solver/rkpm/collocation.hpp"
 #include "solver/rkpm/kernels.hpp"
 #include "solver/rkpm/rkpm_method.hpp"
 #include "solver/rkpm/setup.hpp"
+#include "solver/rkpm/surface.hpp"
 
 #include <gtest/gtest.h>
 
@@ -231,11 +233,42 @@ TEST(Rkpm, FirstStepOfALinearFieldAndMomentum) {
       << "momentum before " << before.transpose() << ", after " << after.transpose();
 }
 
-TEST(Rkpm, RefusesBodiesThatWouldHaveToMeet) {
+// A box lattice's surface triangles close over its boundary particles: they span the box through the
+// particle centres (half a spacing inside the box), each counter-clockwise seen from outside.
+TEST(Rkpm, LatticeSurfaceClosesOverTheBoundaryParticles) {
+  const Problem problem = latticeBlock();  // 5 x 4 x 3 elements of 1 mm
+  BodyParticles made = particlesOf(problem.bodies[0], {}, "RKPM");
+  const std::vector<std::array<LocalIndex, 3>> triangles = latticeSurface(made.element, 0);
+  const std::vector<Vec3>& x = made.particles.points;
+  const Vec3 centre(2.5e-3, 2e-3, 1.5e-3);
+  Vec3 closure = Vec3::Zero();
+  double area = 0.0;
+  for (const auto& t : triangles) {
+    const Vec3 a = 0.5 * (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]);
+    closure += a;
+    area += a.norm();
+    EXPECT_GT(a.dot((x[t[0]] + x[t[1]] + x[t[2]]) / 3.0 - centre), 0.0);  // outward
+  }
+  // The box through the particle centres: 4 x 3 x 2 mm.
+  EXPECT_NEAR(area, 2.0 * (4.0 * 3.0 + 4.0 * 2.0 + 3.0 * 2.0) * 1e-6, 1e-12);
+  EXPECT_LT(closure.norm(), 1e-15);
+}
+
+// Lattice bodies meet through the sliding contact; a tet mesh's body, which has no particle surface
+// yet, is refused beside another body, by name.
+TEST(Rkpm, SeveralBodiesNeedLatticeSurfaces) {
   Problem problem = latticeBlock();
   problem.bodies.push_back(problem.bodies[0]);
   problem.bodies[1].name = "other";
-  EXPECT_NO_THROW(makeMethod(problem));
+  EXPECT_FALSE(buildModel(problem).surface.empty());
+  problem.bodies[1].mesh = geometry::discretise(
+      geometry::structuredBoxMesh(geometry::Box{Vec3(0, 0, 4e-3), Vec3(3e-3, 3e-3, 7e-3)}, {3, 3, 3}));
+  try {
+    buildModel(problem);
+    FAIL() << "a tet-mesh body was taken into a contact it has no surface for";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("body 'other'"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
