@@ -26,25 +26,15 @@ OtmMethod::OtmMethod(Model model, const Problem& problem, const parallel::Commun
     : OtmMethod(std::move(model), settingsFor(problem.settings, problem.walls), ranks) {
   for (const PlaneConstraint& plane : problem.planes) {
     if (!plane.history) continue;
-    History h{plane.axis, plane.history, {}, {}};
+    std::vector<Index> ids;
     for (const LocalIndex a : nodesOnPlane(model_, plane.axis, plane.offset, plane.tolerance, plane.body))
-      h.node_ids.push_back(model_.nodes.id[a]);
-    histories_.push_back(std::move(h));
+      ids.push_back(model_.nodes.id[a]);
+    histories_.add(plane, std::move(ids));
   }
 }
 
 void OtmMethod::locateHistories() {
-  if (histories_.empty()) return;
-  const IdIndex index(model_.nodes.id);
-  for (History& h : histories_) {
-    h.nodes.clear();
-    for (const Index id : h.node_ids) {
-      const LocalIndex a = index.find(id);
-      // A distributed run's rank holds some of the plane's nodes.
-      KESSLER_VERIFY(a >= 0 || distribution_, "prescribed velocity history: node {} is not in the store", id);
-      if (a >= 0) h.nodes.push_back(a);
-    }
-  }
+  histories_.locate(model_.nodes.id, distribution_ != nullptr);  // a distributed run's rank holds some
 }
 
 void OtmMethod::initialise() {
@@ -56,10 +46,7 @@ void OtmMethod::step() {
   // The histories at the middle of the step (a distributed run's nodes move between ranks and
   // places every step).
   if (distribution_) locateHistories();
-  for (const History& h : histories_) {
-    const double v = h.velocity(integrator_.time() + 0.5 * integrator_.nextStep());
-    for (const LocalIndex a : h.nodes) model_.nodes.prescribed_v[a][h.axis] = v;
-  }
+  histories_.apply(integrator_.time() + 0.5 * integrator_.nextStep(), model_.nodes.prescribed_v);
   integrator_.step();
 }
 

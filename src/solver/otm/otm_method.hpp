@@ -1,6 +1,7 @@
 #pragma once
 // OTM as a Method (solver/common/method.hpp): the model, its integrator and its health checks.
 #include "solver/common/method.hpp"
+#include "solver/common/plane_histories.hpp"
 #include "solver/common/problem.hpp"
 #include "solver/otm/diagnostics.hpp"
 #include "solver/otm/distribution.hpp"
@@ -50,12 +51,6 @@ class OtmMethod final : public Method {
 
  private:
   // A plane whose nodes' prescribed velocity follows a history (PlaneConstraint::history).
-  struct History {
-    int axis = 0;
-    std::function<double(double)> velocity;
-    std::vector<Index> node_ids;    // the plane's nodes, found when the model is built
-    std::vector<LocalIndex> nodes;  // and where they are now (locateHistories)
-  };
   // The histories' nodes in the store's current order (after the Morton sort or a restart).
   void locateHistories();
 
@@ -67,7 +62,7 @@ class OtmMethod final : public Method {
   std::unique_ptr<Distribution> distribution_;  // a distributed run's; before the integrator, which holds it
   Integrator integrator_;                       // holds a reference to model_
   Diagnostics diagnostics_;
-  std::vector<History> histories_;
+  PlaneHistories histories_;
   std::optional<GatheredReport> report_;  // a gathered method's
 };
 

@@ -14,17 +14,19 @@ RkpmMethod::RkpmMethod(Model model, const Settings& settings)
     : model_(std::move(model)), integrator_(model_, settings), diagnostics_(settings.solver) {}
 
 RkpmMethod::RkpmMethod(Model model, const Problem& problem) : RkpmMethod(std::move(model), settingsFor(problem)) {
-  for (const PlaneConstraint& plane : problem.planes)
-    if (plane.history) histories_.push_back({plane.axis, plane.history, particlesOnPlane(model_.points, plane)});
+  for (const PlaneConstraint& plane : problem.planes) {
+    if (!plane.history) continue;
+    std::vector<Index> ids;
+    for (const LocalIndex p : particlesOnPlane(model_.points, plane)) ids.push_back(model_.points.id[p]);
+    histories_.add(plane, std::move(ids));
+  }
+  histories_.locate(model_.points.id, false);  // RKPM keeps its particles in place
 }
 
 void RkpmMethod::step() {
   // The histories at the middle of the step, as OTM's and SPH's.
   const Clock c = integrator_.clock();
-  for (const History& h : histories_) {
-    const double v = h.velocity(c.time + 0.5 * c.dt_next);
-    for (const LocalIndex p : h.particles) model_.prescribed_v[p][h.axis] = v;
-  }
+  histories_.apply(c.time + 0.5 * c.dt_next, model_.prescribed_v);
   integrator_.step();
 }
 
@@ -32,10 +34,7 @@ void RkpmMethod::check(double initial_total_energy) {
   const Clock c = integrator_.clock();
   const StepInfo at{c.steps, c.time, c.dt_next, c.dt_initial};
   auto driven = [&] {
-    bool here = !histories_.empty();
-    for (LocalIndex p = 0; p < model_.points.owned && !here; ++p)
-      here = model_.constrained[p] != 0 && model_.prescribed_v[p].squaredNorm() > 0.0;
-    return here;
+    return prescribedWork(histories_, model_.constrained, model_.prescribed_v, model_.points.owned);
   };
   const StepLengthRule rule{[&](LocalIndex p) { return integrator_.stepLength(p); },
                             [&](LocalIndex) { return std::string("its spacing times its smallest stretch"); }};

@@ -3,12 +3,12 @@
 // It runs on one process, each body on its own kernels; bodies meet through the sliding contact
 // (docs/theory.md §12).
 #include "solver/common/method.hpp"
+#include "solver/common/plane_histories.hpp"
 #include "solver/common/point_diagnostics.hpp"
 #include "solver/common/problem.hpp"
 #include "solver/rkpm/integrator.hpp"
 #include "solver/rkpm/model.hpp"
 
-#include <functional>
 #include <vector>
 
 namespace kessler::rkpm {
@@ -47,16 +47,10 @@ class RkpmMethod final : public Method {
   const Integrator& integrator() const { return integrator_; }
 
  private:
-  struct History {
-    int axis = 0;
-    std::function<double(double)> velocity;
-    std::vector<LocalIndex> particles;
-  };
-
   Model model_;
   Integrator integrator_;  // holds a reference to model_
   PointDiagnostics diagnostics_;
-  std::vector<History> histories_;
+  PlaneHistories histories_;
 };
 
 }  // namespace kessler::rkpm

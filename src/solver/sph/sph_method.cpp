@@ -30,9 +30,9 @@ SphMethod::SphMethod(Model model, const Problem& problem, const parallel::Commun
     : SphMethod(std::move(model), settingsFor(problem), ranks) {
   for (const PlaneConstraint& plane : problem.planes) {
     if (!plane.history) continue;
-    History h{plane.axis, plane.history, {}, {}};
-    for (const LocalIndex p : particlesOnPlane(model_.points, plane)) h.ids.push_back(model_.points.id[p]);
-    histories_.push_back(std::move(h));
+    std::vector<Index> ids;
+    for (const LocalIndex p : particlesOnPlane(model_.points, plane)) ids.push_back(model_.points.id[p]);
+    histories_.add(plane, std::move(ids));
   }
 }
 
@@ -42,17 +42,7 @@ void SphMethod::initialise() {
 }
 
 void SphMethod::locateHistories() {
-  if (histories_.empty()) return;
-  const IdIndex index(model_.points.id);
-  for (History& h : histories_) {
-    h.particles.clear();
-    for (const Index id : h.ids) {
-      const LocalIndex p = index.find(id);
-      // A distributed run's rank holds some of the plane's particles.
-      KESSLER_VERIFY(p >= 0 || distribution_, "prescribed velocity history: particle {} is not in the store", id);
-      if (p >= 0) h.particles.push_back(p);
-    }
-  }
+  histories_.locate(model_.points.id, distribution_ != nullptr);  // a distributed run's rank holds some
   located_ = distribution_ ? distribution_->layout() : 0;
 }
 
@@ -60,10 +50,7 @@ void SphMethod::step() {
   // The histories at the middle of the step, as OTM's, on the particles where they are now.
   if (distribution_ && distribution_->layout() != located_) locateHistories();
   const Clock c = integrator_.clock();
-  for (const History& h : histories_) {
-    const double v = h.velocity(c.time + 0.5 * c.dt_next);
-    for (const LocalIndex p : h.particles) model_.prescribed_v[p][h.axis] = v;
-  }
+  histories_.apply(c.time + 0.5 * c.dt_next, model_.prescribed_v);
   integrator_.step();
 }
 
@@ -73,10 +60,7 @@ void SphMethod::check(double initial_total_energy) {
   // A piston does work (the same answer on every rank of a distributed run: a velocity history, or
   // a prescribed velocity held by any rank).
   auto driven = [&] {
-    bool here = !histories_.empty();
-    for (LocalIndex p = 0; p < model_.points.owned && !here; ++p)
-      here = model_.constrained[p] != 0 && model_.prescribed_v[p].squaredNorm() > 0.0;
-    return here;
+    return prescribedWork(histories_, model_.constrained, model_.prescribed_v, model_.points.owned);
   };
   const StepLengthRule rule{[&](LocalIndex p) { return integrator_.smoothingLength(p); },
                             [&](LocalIndex) { return std::string("its smoothing length"); }};

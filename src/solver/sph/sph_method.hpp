@@ -1,6 +1,7 @@
 #pragma once
 // SPH as a Method (solver/common/method.hpp): its particles, its integrator and its health checks.
 #include "solver/common/method.hpp"
+#include "solver/common/plane_histories.hpp"
 #include "solver/common/point_diagnostics.hpp"
 #include "solver/common/problem.hpp"
 #include "solver/sph/integrator.hpp"
@@ -51,13 +52,6 @@ class SphMethod final : public Method {
   const Integrator& integrator() const { return integrator_; }
 
  private:
-  // A plane's particles whose prescribed velocity component follows a history.
-  struct History {
-    int axis = 0;
-    std::function<double(double)> velocity;
-    std::vector<Index> ids;             // the plane's particles, found when the model is built
-    std::vector<LocalIndex> particles;  // and where they are now (locateHistories)
-  };
   // The histories' particles in the store's current order (a distributed run's move between ranks).
   void locateHistories();
 
@@ -65,7 +59,7 @@ class SphMethod final : public Method {
   std::unique_ptr<Distribution> distribution_;  // a distributed run's; before the integrator, which holds it
   Integrator integrator_;                       // holds a reference to model_
   PointDiagnostics diagnostics_;
-  std::vector<History> histories_;
+  PlaneHistories histories_;
   long located_ = -1;                     // the distribution's layout the histories were located in
   std::optional<GatheredReport> report_;  // a gathered method's
 };
