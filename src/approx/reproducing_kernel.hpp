@@ -1,6 +1,6 @@
 #pragma once
 // Reproducing kernel shape functions with a linear basis (Liu, Jun & Zhang, IJNMF 20:1081, 1995;
-// Chen, Pan, Wu & Liu, CMAME 139:195, 1996, eq. 2.4-2.9; docs/theory.md §12):
+// Chen, Pan, Wu & Liu, CMAME 139:195, 1996; docs/theory.md §12):
 //   Psi_I(x) = H^T(0) M^-1(x) H(x - x_I) phi_a(x - x_I) V_I,
 //   M(x) = sum_I H(x - x_I) H^T(x - x_I) phi_a(x - x_I) V_I,
 // with H(y) = [1, y / s] (s a length that scales the basis, so that M is well conditioned) and phi_a
@@ -13,7 +13,7 @@
 
 namespace kessler::rk {
 
-// The cubic B-spline window of z = r / a (Chen et al. 1996, eq. 2.10): 0 for z >= 1.
+// The cubic B-spline window of z = r / a (Chen et al. 1996): 0 for z >= 1.
 inline double cubicWindow(double z) {
   if (z >= 1.0) return 0.0;
   if (z <= 0.5) return 2.0 / 3.0 - 4.0 * z * z + 4.0 * z * z * z;

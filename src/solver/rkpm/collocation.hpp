@@ -1,6 +1,6 @@
 #pragma once
 // Essential boundary conditions by velocity collocation (docs/theory.md §12; Zhao & Song, Explosion
-// and Shock Waves 30, 2010; Chen & Wang, CMAME 181:117, 2000). RK shape functions do not interpolate:
+// and Shock Waves 30, 2010). RK shape functions do not interpolate:
 // a particle's velocity is sum_I Psi_I(X_K) vhat_I over the coefficients vhat_I, not its own
 // coefficient. A velocity g prescribed at the boundary particles B is met by choosing their
 // coefficients: with J_KI = Psi_I(X_K) (K, I in B) and G_KI = Psi_I(X_K) (K in B, I not in B),

@@ -2,11 +2,11 @@
 // RKPM's shape functions, computed once on the reference configuration (docs/theory.md §12): each
 // particle's reproducing kernel values at the particles (which turn coefficients into the physical
 // positions and velocities of the particles) and the stabilised conforming nodal integration's
-// smoothed gradients (Chen, Wu, Yoon & You, IJNME 50:435, 2001, eq. 21-23):
+// smoothed gradients (Chen, Wu, Yoon & You, IJNME 50:435, 2001):
 //   grad~ Psi_I(X_J) = 1 / V_J  sum over the faces f of cell J of  Psi_I(c_f) A_f n_f,
 // the gradient averaged over the particle's cell by the divergence theorem, each face's integral by
 // its centroid (exact for the linear fields the kernels reproduce: the smoothed gradients of a
-// linear field are its gradient, which is the integration constraint of Chen et al. 2001, eq. 16).
+// linear field are its gradient, which is the integration constraint of Chen et al. 2001).
 #include "approx/reproducing_kernel.hpp"
 #include "core/types.hpp"
 
