@@ -33,6 +33,13 @@ struct Clock {
   double dt_last = 0.0;     // the step just taken (0 before the first)
   double dt_next = 0.0;     // the step about to be taken
   double dt_initial = 0.0;  // the run's first step
+
+  // After a step of dt.
+  void advance(double dt) {
+    time += dt;
+    dt_last = dt;
+    ++steps;
+  }
 };
 
 class Method {

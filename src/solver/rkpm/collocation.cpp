@@ -1,7 +1,6 @@
 #include "solver/rkpm/collocation.hpp"
 
 #include "core/error.hpp"
-#include "solver/common/mirror.hpp"
 
 #include <fmt/format.h>
 
@@ -59,20 +58,6 @@ void VelocityCollocation::impose(std::span<const Vec3> prescribed, std::span<Vec
     rhs -= c.coupling * v;
     const Eigen::VectorXd solved = c.solver->solve(rhs);
     for (Eigen::Index r = 0; r < m; ++r) coefficients[static_cast<std::size_t>(c.particles[r])][a] = solved[r];
-  }
-}
-
-void VelocityCollocation::interpolate(const Table<double>& psi, std::span<const Vec3> coefficients,
-                                      std::span<Vec3> out) {
-  const LocalIndex n = psi.rows();
-#pragma omp parallel for schedule(static)
-  for (LocalIndex k = 0; k < n; ++k) {
-    Vec3 sum = Vec3::Zero();
-    for (LocalIndex e = psi.offset[k]; e < psi.offset[k + 1]; ++e) {
-      const auto slot = static_cast<std::size_t>(e);
-      sum += psi.value[slot] * reflect(coefficients[static_cast<std::size_t>(psi.column[slot])], psi.mirror[slot]);
-    }
-    out[k] = sum;
   }
 }
 

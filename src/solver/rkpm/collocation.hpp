@@ -28,8 +28,6 @@ class VelocityCollocation {
 
   // Sets the constrained particles' coefficients so that their velocities are `prescribed`.
   void impose(std::span<const Vec3> prescribed, std::span<Vec3> coefficients) const;
-  // The particles' velocities from the coefficients (sum_I Psi_I(X_K) vhat_I), for a check.
-  static void interpolate(const Table<double>& psi, std::span<const Vec3> coefficients, std::span<Vec3> out);
 
  private:
   struct Component {

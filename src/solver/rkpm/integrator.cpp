@@ -165,9 +165,7 @@ void Integrator::step() {
   } catch (const NumericalError& e) {
     throw NumericalError(fmt::format("step {}, t = {:.6g} s: {}", clock_.steps + 1, clock_.time, e.what()));
   }
-  clock_.time += dt;
-  clock_.dt_last = dt;
-  ++clock_.steps;
+  clock_.advance(dt);
   ScopedPhase phase(timers_, "time step");
   clock_.dt_next = stableStep(model_.points, volume_rate_, std::numeric_limits<double>::infinity(),
                               settings_.solver.cfl, [&](LocalIndex p) { return stepLength(p); });
@@ -306,8 +304,8 @@ void Integrator::updateMaterials(double dt) {
 
 // The particles where their coefficients put them.
 void Integrator::place() {
-  VelocityCollocation::interpolate(kernels_.psi, model_.coefficient_x, model_.points.x);
-  VelocityCollocation::interpolate(kernels_.psi, model_.coefficient_v, model_.points.v);
+  interpolate(kernels_.psi, model_.coefficient_x, model_.points.x);
+  interpolate(kernels_.psi, model_.coefficient_v, model_.points.v);
 }
 
 void Integrator::forces() {

@@ -202,4 +202,17 @@ Kernels buildKernels(const KernelInput& in) {
   return k;
 }
 
+void interpolate(const Table<double>& psi, std::span<const Vec3> coefficients, std::span<Vec3> out) {
+  const LocalIndex n = psi.rows();
+#pragma omp parallel for schedule(static)
+  for (LocalIndex k = 0; k < n; ++k) {
+    Vec3 sum = Vec3::Zero();
+    for (LocalIndex e = psi.offset[k]; e < psi.offset[k + 1]; ++e) {
+      const auto slot = static_cast<std::size_t>(e);
+      sum += psi.value[slot] * reflect(coefficients[static_cast<std::size_t>(psi.column[slot])], psi.mirror[slot]);
+    }
+    out[k] = sum;
+  }
+}
+
 }  // namespace kessler::rkpm

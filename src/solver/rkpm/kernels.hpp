@@ -60,4 +60,8 @@ struct KernelInput {
 // Throws kessler::Error naming the body and the position where a moment matrix is singular.
 Kernels buildKernels(const KernelInput& in);
 
+// The particles' values from the coefficients, out_K = sum_I Psi_I(X_K) chat_I (an image's
+// coefficient reflected): their positions from xhat, their velocities from vhat.
+void interpolate(const Table<double>& psi, std::span<const Vec3> coefficients, std::span<Vec3> out);
+
 }  // namespace kessler::rkpm

@@ -160,9 +160,7 @@ void Integrator::step() {
   } catch (const NumericalError& e) {
     throw NumericalError(fmt::format("step {}, t = {:.6g} s: {}", clock_.steps + 1, clock_.time, e.what()));
   }
-  clock_.time += dt;
-  clock_.dt_last = dt;
-  ++clock_.steps;
+  clock_.advance(dt);
   ScopedPhase phase(timers_, "time step");
   clock_.dt_next = stableStep();
 }

@@ -7,7 +7,6 @@
 #include "solver/sph/integrator.hpp"
 #include "solver/sph/model.hpp"
 
-#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>

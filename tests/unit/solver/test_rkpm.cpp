@@ -191,7 +191,7 @@ TEST(Rkpm, VelocityCollocationHoldsThePrescribedVelocity) {
   const VelocityCollocation collocation(k.psi, constrained);
   collocation.impose(prescribed, v);
   std::vector<Vec3> at(static_cast<std::size_t>(n));
-  VelocityCollocation::interpolate(k.psi, v, at);
+  interpolate(k.psi, v, at);
   double worst = 0.0;
   for (LocalIndex p = 0; p < n; ++p)
     for (int a = 0; a < 3; ++a)
