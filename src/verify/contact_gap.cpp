@@ -34,15 +34,15 @@ Outcome contactGap() {
   double h_max = 0.0;
   for (LocalIndex p = 0; p < points.owned; ++p) h_max = std::max(h_max, points.spacing(p));
   const double coupling = problem.settings.otm.contact_distance * h_max;
-  // Between the node surfaces; for a method without nodes (SPH), between the particles' elements,
-  // half a spacing beyond their centres.
+  // Between the node surfaces; for particles (SPH, RKPM), between their cells, half a spacing beyond
+  // their centres.
   auto surfaceGap = [&] {
     double front = -std::numeric_limits<double>::infinity(), back = std::numeric_limits<double>::infinity();
-    for (LocalIndex n = 0; n < nodes.owned; ++n) {
+    for (LocalIndex n = 0; surfaceOnNodes(nodes) && n < nodes.owned; ++n) {
       if (nodes.body[n] == a) front = std::max(front, nodes.x[n][0]);
       if (nodes.body[n] == b) back = std::min(back, nodes.x[n][0]);
     }
-    if (nodes.owned == 0)
+    if (!surfaceOnNodes(nodes))
       for (LocalIndex p = 0; p < points.owned; ++p) {
         if (points.body[p] == a) front = std::max(front, points.x[p][0] + 0.5 * points.spacing(p));
         if (points.body[p] == b) back = std::min(back, points.x[p][0] - 0.5 * points.spacing(p));

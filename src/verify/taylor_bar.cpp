@@ -47,14 +47,14 @@ TaylorBarResult runTaylorBar(double mesh_size, double cfl, bool volume_averaging
   const NodeCloud nodes = method->nodes();
 
   TaylorBarResult r;
-  for (LocalIndex a = 0; a < nodes.owned; ++a) {
-    const Vec3& x = nodes.x[a];
-    r.length = std::max(r.length, x[2]);
-    if (x[2] < 0.25 * mesh_size) r.footprint_radius = std::max(r.footprint_radius, std::hypot(x[0], x[1]));
-  }
   const PointStore& points = method->state().points;
-  // A method without nodes (SPH): its particles' elements, half a spacing beyond their centres.
-  if (nodes.owned == 0)
+  if (surfaceOnNodes(nodes))
+    for (LocalIndex a = 0; a < nodes.owned; ++a) {
+      const Vec3& x = nodes.x[a];
+      r.length = std::max(r.length, x[2]);
+      if (x[2] < 0.25 * mesh_size) r.footprint_radius = std::max(r.footprint_radius, std::hypot(x[0], x[1]));
+    }
+  else  // the particles' cells (SPH, RKPM), half a spacing beyond their centres
     for (LocalIndex q = 0; q < points.owned; ++q) {
       const Vec3& x = points.x[q];
       const double half = 0.5 * points.spacing(q);

@@ -5,6 +5,7 @@
 #include "solver/common/mirror.hpp"
 #include "solver/common/stable_step.hpp"
 #include "solver/common/viscosity_limiter.hpp"
+#include "solver/rkpm/wall_contact.hpp"
 
 #include <fmt/format.h>
 
@@ -92,6 +93,9 @@ void Integrator::prepare() {
   volume_rate_.assign(n, 0.0);
   piola_.assign(n, Mat3::Zero());
   du_.assign(n, Vec3::Zero());
+  particle_v_.assign(n, Vec3::Zero());
+  before_.assign(n, Vec3::Zero());
+  particle_du_.assign(n, Vec3::Zero());
   gap_.resize(n);
   for (std::size_t p = 0; p < n; ++p) gap_[p] = 0.5 * points.spacing0[p];
   contact_heat_.assign(n, 0.0);
@@ -142,7 +146,7 @@ void Integrator::step() {
     }
     if (!model_.surface.empty()) {
       ScopedPhase phase(timers_, "contact");
-      slide();
+      slide(dt);
     }
     {
       ScopedPhase phase(timers_, "point update");
@@ -175,23 +179,25 @@ void Integrator::kick(double dt_kick, double dt) {
   const LocalIndex n = model_.points.owned;
   std::vector<Vec3>& v = model_.coefficient_v;
 #pragma omp parallel for schedule(static)
-  for (LocalIndex i = 0; i < n; ++i) {
-    v[i] += dt_kick * acceleration_[i];
-    // The walls stop the coefficients (docs/theory.md §12: an approximation, as the particles lie
-    // within a fraction of a spacing of their coefficients near a wall).
-    imposeBoundaries(0, Vec3::Zero(), settings_.walls, model_.coefficient_x[i], dt, v[i]);
-  }
+  for (LocalIndex i = 0; i < n; ++i) v[i] += dt_kick * acceleration_[i];
+  if (!settings_.walls.empty()) imposeWalls(settings_.walls, kernels_.psi, mass_, model_.points.x, gap_, dt, v);
   collocation_.impose(model_.prescribed_v, v);
 #pragma omp parallel for schedule(static)
   for (LocalIndex i = 0; i < n; ++i) du_[i] = dt * v[i];
 }
 
-// The sliding contact on the coefficients of the bodies' surface particles, which stand for the
-// particles (as the walls' do; docs/theory.md §12): velocity exchanges only, no position correction.
-// Acting on the coefficients with their lumped masses, it conserves the particles' linear momentum
-// exactly (sum_I m_I vhat_I = sum_K m_K v_K); the energy it takes is booked apart.
-void Integrator::slide() {
+namespace {
+constexpr int contact_passes = 8;  // at most, per step (Integrator::slide)
+}  // namespace
+
+// The sliding contact between the bodies' surface particles (docs/theory.md §12): it acts on the
+// particles, at their positions and with their velocities and masses, with velocity exchanges only
+// (no position correction). Each particle's impulse m_K dv_K reaches the coefficients as a force
+// does, through the shape functions: vhat_I += 1 / m_I  sum_K Psi_I(X_K) m_K dv_K, which conserves
+// the linear momentum exactly (the shape functions sum to one); the energy it takes is booked apart.
+void Integrator::slide(double dt) {
   const PointStore& points = model_.points;
+  const LocalIndex n = points.owned;
   // The surface now: a triangle of debris, or stretched beyond three spacings (its particles have
   // parted: the surface is torn there), is not surface.
   surface_.triangles.clear();
@@ -201,7 +207,7 @@ void Integrator::slide() {
     bool debris = false;
     for (int e = 0; e < 3; ++e) {
       const LocalIndex a = t[static_cast<std::size_t>(e)], b = t[static_cast<std::size_t>((e + 1) % 3)];
-      longest = std::max(longest, (model_.coefficient_x[a] - model_.coefficient_x[b]).norm());
+      longest = std::max(longest, (points.x[a] - points.x[b]).norm());
       spacing = std::max(spacing, points.spacing0[a]);
       debris = debris || points.debris(a);
     }
@@ -212,12 +218,53 @@ void Integrator::slide() {
   std::sort(surface_.slaves.begin(), surface_.slaves.end());
   surface_.slaves.erase(std::unique(surface_.slaves.begin(), surface_.slaves.end()), surface_.slaves.end());
   std::fill(contact_heat_.begin(), contact_heat_.end(), 0.0);
-  const SlidingCarriers carriers{
-      model_.coefficient_x, du_, model_.coefficient_v, mass_, points.body, model_.constrained, contact_heat_, gap_};
-  const SlidingReport report = contact_.apply(surface_, carriers, model_.bodies.size());
-  for (std::size_t b = 0; b < report.touching.size(); ++b)
-    for (std::size_t o = 0; o < report.touching.size(); ++o)
-      if (report.touching[b] & (std::uint64_t{1} << o)) {
+  // The contact's impulses reach the particles through the shape functions, which spread each over
+  // its neighbours: a particle's velocity after one pass is not yet the one the contact asked for.
+  // The passes repeat, with the particles that moved in the last one as the slaves (the triangles
+  // stay), until the impulses are less than a thousandth of the first pass's (at most
+  // `contact_passes`): an iterative solution of the collocation of the contact's velocities.
+  std::vector<std::uint64_t> touching(model_.bodies.size(), 0);
+  const Table<double>& psi = kernels_.psi;
+  std::vector<Vec3>& v = model_.coefficient_v;
+  double first = 0.0;
+  const std::vector<LocalIndex> vertices = surface_.slaves;
+  for (int pass = 0; pass < contact_passes && !surface_.slaves.empty(); ++pass) {
+    for (const LocalIndex k : vertices) {
+      Vec3 at = Vec3::Zero();
+      for (LocalIndex e = psi.offset[k]; e < psi.offset[k + 1]; ++e) {
+        const auto slot = static_cast<std::size_t>(e);
+        at += psi.value[slot] * reflect(v[static_cast<std::size_t>(psi.column[slot])], psi.mirror[slot]);
+      }
+      particle_v_[k] = before_[k] = at;
+      particle_du_[k] = dt * at;
+    }
+    const SlidingCarriers carriers{points.x,    particle_du_,       particle_v_,   points.mass,
+                                   points.body, model_.constrained, contact_heat_, gap_};
+    const SlidingReport report = contact_.apply(surface_, carriers, model_.bodies.size());
+    for (std::size_t b = 0; b < touching.size(); ++b) touching[b] |= report.touching[b];
+    double total = 0.0;
+    std::vector<LocalIndex> moved;
+    for (const LocalIndex k : vertices) {
+      const Vec3 impulse = points.mass[k] * (particle_v_[k] - before_[k]);
+      if (impulse == Vec3::Zero()) continue;
+      moved.push_back(k);
+      total += impulse.norm();
+      for (LocalIndex e = psi.offset[k]; e < psi.offset[k + 1]; ++e) {
+        const auto slot = static_cast<std::size_t>(e);
+        const auto i = static_cast<std::size_t>(psi.column[slot]);
+        v[i] += reflect(impulse, psi.mirror[slot]) * (psi.value[slot] / mass_[i]);
+      }
+    }
+    collocation_.impose(model_.prescribed_v, v);
+    if (pass == 0) first = total;
+    if (!(total > 1e-3 * first)) break;
+    surface_.slaves = std::move(moved);
+  }
+#pragma omp parallel for schedule(static)
+  for (LocalIndex i = 0; i < n; ++i) du_[i] = dt * v[i];
+  for (std::size_t b = 0; b < touching.size(); ++b)
+    for (std::size_t o = 0; o < touching.size(); ++o)
+      if (touching[b] & (std::uint64_t{1} << o)) {
         model_.bodies[b].touched |= std::uint64_t{1} << o;
         model_.bodies[o].touched |= std::uint64_t{1} << b;
       }

@@ -1,9 +1,11 @@
 #pragma once
 // RKPM's time step (docs/theory.md §12): a total-Lagrangian reproducing kernel particle method with
 // stabilised conforming nodal integration, central differences in time.
-//   1. kick: vhat += dt_avg f / m (the last step's forces, lumped masses), the walls, then velocity
-//      collocation of the prescribed components (solver/rkpm/collocation.hpp); between bodies, the
-//      sliding contact on their surface particles' coefficients (solver/rkpm/surface.hpp);
+//   1. kick: vhat += dt_avg f / m (the last step's forces, lumped masses), the walls' impulses on the
+//      particles that meet them (solver/rkpm/wall_contact.hpp), then velocity collocation of the
+//      prescribed components (solver/rkpm/collocation.hpp); between bodies, the sliding contact
+//      on their surface particles (solver/rkpm/surface.hpp), its impulses reaching the
+//      coefficients through the shape functions;
 //   2. drift xhat += dt vhat; each particle's deformation gradient from the coefficients,
 //      F_J = I + sum_I (xhat_I - X_I) (x) grad~ Psi_I(X_J), and dF = F F_old^-1;
 //   3. the material update (the shared laws, from F, dF and the volume), with the laws' bulk
@@ -63,7 +65,7 @@ class Integrator {
  private:
   void prepare();
   void kick(double dt_kick, double dt);
-  void slide();
+  void slide(double dt);
   void deform(double dt);
   void updateMaterials(double dt);
   void place();
@@ -82,9 +84,10 @@ class Integrator {
   DebrisRelease release_;
   std::vector<IndexRange> body_points_;
   std::vector<Vec3> acceleration_;
-  std::vector<double> volume_rate_;  // ln det dF / dt of the last step
-  std::vector<Mat3> piola_;          // V0_J P_J
-  std::vector<Vec3> du_;             // the coefficients' move over the step
+  std::vector<double> volume_rate_;                      // ln det dF / dt of the last step
+  std::vector<Mat3> piola_;                              // V0_J P_J
+  std::vector<Vec3> du_;                                 // the coefficients' move over the step
+  std::vector<Vec3> particle_v_, particle_du_, before_;  // the surface particles', for the sliding contact
   // The sliding contact between bodies: its surface, each particle's gap (half its spacing: its
   // cell's reach beyond it), the energy it took in a step per particle, and in all.
   ContactSurface surface_;

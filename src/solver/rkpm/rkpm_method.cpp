@@ -44,7 +44,7 @@ void RkpmMethod::check(double initial_total_energy) {
 NodeCloud RkpmMethod::nodes() const {
   const PointStore& points = model_.points;
   return NodeCloud{points.id,   points.body, model_.coefficient_x, model_.coefficient_v, integrator_.masses(),
-                   points.owned};
+                   points.owned, false};
 }
 
 void RkpmMethod::save(StateWriter& out) const {

@@ -1,6 +1,6 @@
 // RKPM (solver/rkpm/, docs/theory.md §12): the reproducing kernels' consistency, the singular moment
 // matrix refused, the smoothed gradients' patch test on irregular particles (lattice cells, tet
-// cells, and across a symmetry plane), velocity collocation, and linear momentum.
+// cells, and across a symmetry plane), velocity collocation, the walls' impulses, and linear momentum.
 #include "../blocks.hpp"
 #include "approx/reproducing_kernel.hpp"
 #include "core/error.hpp"
@@ -13,6 +13,7 @@
 #include "solver/rkpm/rkpm_method.hpp"
 #include "solver/rkpm/setup.hpp"
 #include "solver/rkpm/surface.hpp"
+#include "solver/rkpm/wall_contact.hpp"
 
 #include <gtest/gtest.h>
 
@@ -197,6 +198,45 @@ TEST(Rkpm, VelocityCollocationHoldsThePrescribedVelocity) {
     for (int a = 0; a < 3; ++a)
       if (constrained[p] & (1u << a)) worst = std::max(worst, std::abs(at[p][a] - prescribed[p][a]));
   EXPECT_LT(worst, 1e-12 * 100.0);  // relative to the speeds
+}
+
+// A rigid wall meets the particles, not the coefficients: a jittered block moving at random velocities
+// onto the wall z = 0 (its bottom particles a jitter from their gap, half a spacing), after the walls'
+// impulses no particle ends the step closer to the wall than its gap (to round-off), the tangential
+// velocities are untouched, and the momentum gained is the wall's push (normal, towards +z).
+TEST(Rkpm, WallImpulsesKeepTheParticlesOutOfTheWall) {
+  const Problem problem = latticeBlock({0});
+  const Model model = jittered(problem);
+  const Kernels k = kernelsOf(model, problem);
+  const auto n = static_cast<std::size_t>(model.reference.size());
+  std::vector<double> mass(n, 0.0), gap(n);
+  for (std::size_t p = 0; p < n; ++p) {
+    gap[p] = 0.5 * model.points.spacing0[p];
+    for (LocalIndex e = k.psi.offset[p]; e < k.psi.offset[p + 1]; ++e)
+      mass[static_cast<std::size_t>(k.psi.column[static_cast<std::size_t>(e)])] +=
+          model.points.mass[p] * k.psi.value[static_cast<std::size_t>(e)];
+  }
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> speed(-50.0, 50.0);
+  std::vector<Vec3> v(n);
+  for (Vec3& c : v) c = Vec3(speed(random), speed(random), speed(random) - 200.0);
+  const std::vector<Vec3> before = v;
+  const double dt = 1e-6;  // 0.2 mm at 200 m/s: the bottom two layers would cross
+  const std::vector<RigidWall> walls{RigidWall{2, 0.0, 1}};
+  const std::size_t pushed = imposeWalls(walls, k.psi, mass, model.reference, gap, dt, v);
+  EXPECT_GT(pushed, 0u);
+  std::vector<Vec3> at(n);
+  interpolate(k.psi, v, at);
+  double worst = 0.0;
+  Vec3 momentum = Vec3::Zero();
+  for (std::size_t p = 0; p < n; ++p) {
+    worst = std::max(worst, gap[p] - (model.reference[p].z() + dt * at[p].z()));
+    EXPECT_EQ(v[p].x(), before[p].x());
+    EXPECT_EQ(v[p].y(), before[p].y());
+    momentum += mass[p] * (v[p] - before[p]);
+  }
+  EXPECT_LT(worst, 1e-12 * h);
+  EXPECT_GT(momentum.z(), 0.0);
 }
 
 // A free block with a linear velocity field: every particle's first deformation gradient is I + dt G
