@@ -96,6 +96,7 @@ void Integrator::prepare() {
   particle_v_.assign(n, Vec3::Zero());
   before_.assign(n, Vec3::Zero());
   particle_du_.assign(n, Vec3::Zero());
+  moved_mark_.assign(n, 0);
   gap_.resize(n);
   for (std::size_t p = 0; p < n; ++p) gap_[p] = 0.5 * points.spacing0[p];
   contact_heat_.assign(n, 0.0);
@@ -220,16 +221,19 @@ void Integrator::slide(double dt) {
   std::fill(contact_heat_.begin(), contact_heat_.end(), 0.0);
   // The contact's impulses reach the particles through the shape functions, which spread each over
   // its neighbours: a particle's velocity after one pass is not yet the one the contact asked for.
-  // The passes repeat, with the particles that moved in the last one as the slaves (the triangles
-  // stay), until the impulses are less than a thousandth of the first pass's (at most
+  // The passes repeat on the particles that moved in the last one and the triangles they are
+  // vertices of, until the impulses are less than a thousandth of the first pass's (at most
   // `contact_passes`): an iterative solution of the collocation of the contact's velocities.
   std::vector<std::uint64_t> touching(model_.bodies.size(), 0);
   const Table<double>& psi = kernels_.psi;
   std::vector<Vec3>& v = model_.coefficient_v;
+  std::vector<LocalIndex> active = surface_.slaves;  // the particles a pass reads: slaves and vertices
   double first = 0.0;
-  const std::vector<LocalIndex> vertices = surface_.slaves;
   for (int pass = 0; pass < contact_passes && !surface_.slaves.empty(); ++pass) {
-    for (const LocalIndex k : vertices) {
+    const auto count = static_cast<std::ptrdiff_t>(active.size());
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t r = 0; r < count; ++r) {
+      const LocalIndex k = active[static_cast<std::size_t>(r)];
       Vec3 at = Vec3::Zero();
       for (LocalIndex e = psi.offset[k]; e < psi.offset[k + 1]; ++e) {
         const auto slot = static_cast<std::size_t>(e);
@@ -244,7 +248,7 @@ void Integrator::slide(double dt) {
     for (std::size_t b = 0; b < touching.size(); ++b) touching[b] |= report.touching[b];
     double total = 0.0;
     std::vector<LocalIndex> moved;
-    for (const LocalIndex k : vertices) {
+    for (const LocalIndex k : active) {
       const Vec3 impulse = points.mass[k] * (particle_v_[k] - before_[k]);
       if (impulse == Vec3::Zero()) continue;
       moved.push_back(k);
@@ -255,11 +259,21 @@ void Integrator::slide(double dt) {
         v[i] += reflect(impulse, psi.mirror[slot]) * (psi.value[slot] / mass_[i]);
       }
     }
-    collocation_.impose(model_.prescribed_v, v);
     if (pass == 0) first = total;
     if (!(total > 1e-3 * first)) break;
+    for (const LocalIndex k : moved) moved_mark_[k] = 1;
+    std::vector<std::array<LocalIndex, 3>> kept;
+    for (const auto& t : surface_.triangles)
+      if (moved_mark_[t[0]] || moved_mark_[t[1]] || moved_mark_[t[2]]) kept.push_back(t);
+    for (const LocalIndex k : moved) moved_mark_[k] = 0;
+    surface_.triangles = std::move(kept);
+    active = moved;
+    for (const auto& t : surface_.triangles) active.insert(active.end(), t.begin(), t.end());
+    std::sort(active.begin(), active.end());
+    active.erase(std::unique(active.begin(), active.end()), active.end());
     surface_.slaves = std::move(moved);
   }
+  collocation_.impose(model_.prescribed_v, v);
 #pragma omp parallel for schedule(static)
   for (LocalIndex i = 0; i < n; ++i) du_[i] = dt * v[i];
   for (std::size_t b = 0; b < touching.size(); ++b)

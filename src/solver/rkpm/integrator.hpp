@@ -87,6 +87,7 @@ class Integrator {
   std::vector<double> volume_rate_;                      // ln det dF / dt of the last step
   std::vector<Mat3> piola_;                              // V0_J P_J
   std::vector<Vec3> du_;                                 // the coefficients' move over the step
+  std::vector<std::uint8_t> moved_mark_;
   std::vector<Vec3> particle_v_, particle_du_, before_;  // the surface particles', for the sliding contact
   // The sliding contact between bodies: its surface, each particle's gap (half its spacing: its
   // cell's reach beyond it), the energy it took in a step per particle, and in all.
