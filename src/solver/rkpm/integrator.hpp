@@ -84,13 +84,15 @@ class Integrator {
   DebrisRelease release_;
   std::vector<IndexRange> body_points_;
   std::vector<Vec3> acceleration_;
-  std::vector<double> volume_rate_;                      // ln det dF / dt of the last step
-  std::vector<Mat3> piola_;                              // V0_J P_J
-  std::vector<Vec3> du_;                                 // the coefficients' move over the step
-  std::vector<std::uint8_t> moved_mark_;
-  std::vector<Vec3> particle_v_, particle_du_, before_;  // the surface particles', for the sliding contact
+  std::vector<double> volume_rate_;  // ln det dF / dt of the last step
+  std::vector<Mat3> piola_;          // V0_J P_J
+  std::vector<Vec3> du_;             // the coefficients' move over the step
   // The sliding contact between bodies: its surface, each particle's gap (half its spacing: its
-  // cell's reach beyond it), the energy it took in a step per particle, and in all.
+  // cell's reach beyond it), the energy it took in a step per particle, and in all; the surface
+  // particles' velocities and moves a pass gives it, those before the pass, and a mark per particle
+  // (the particles a pass moved).
+  std::vector<Vec3> particle_v_, particle_du_, before_;
+  std::vector<std::uint8_t> moved_mark_;
   ContactSurface surface_;
   SlidingContact contact_;
   std::vector<double> gap_, contact_heat_;

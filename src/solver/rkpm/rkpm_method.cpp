@@ -43,7 +43,7 @@ void RkpmMethod::check(double initial_total_energy) {
 
 NodeCloud RkpmMethod::nodes() const {
   const PointStore& points = model_.points;
-  return NodeCloud{points.id,   points.body, model_.coefficient_x, model_.coefficient_v, integrator_.masses(),
+  return NodeCloud{points.id,    points.body, model_.coefficient_x, model_.coefficient_v, integrator_.masses(),
                    points.owned, false};
 }
 
