@@ -108,6 +108,8 @@ def main():
     for r in rows:
         if r["perforated"]:
             ax.plot(r["speed"], r["end_speed"], "o", color="tab:red")
+            ax.annotate(f"at {1e6 * r['end_time']:.0f} us", (r["speed"], r["end_speed"]), textcoords="offset points",
+                        xytext=(6, -10), fontsize=7)
         else:
             ax.plot(r["speed"], 0.0, "s", color="tab:blue")
             ax.annotate(f"held; rod at {r['end_speed']:.0f} m/s\nat {1e6 * r['end_time']:.0f} us",
