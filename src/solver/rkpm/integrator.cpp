@@ -234,11 +234,7 @@ void Integrator::slide(double dt) {
 #pragma omp parallel for schedule(static)
     for (std::ptrdiff_t r = 0; r < count; ++r) {
       const LocalIndex k = active[static_cast<std::size_t>(r)];
-      Vec3 at = Vec3::Zero();
-      for (LocalIndex e = psi.offset[k]; e < psi.offset[k + 1]; ++e) {
-        const auto slot = static_cast<std::size_t>(e);
-        at += psi.value[slot] * reflect(v[static_cast<std::size_t>(psi.column[slot])], psi.mirror[slot]);
-      }
+      const Vec3 at = valueAt(psi, v, k);
       particle_v_[k] = before_[k] = at;
       particle_du_[k] = dt * at;
     }
@@ -253,11 +249,7 @@ void Integrator::slide(double dt) {
       if (impulse == Vec3::Zero()) continue;
       moved.push_back(k);
       total += impulse.norm();
-      for (LocalIndex e = psi.offset[k]; e < psi.offset[k + 1]; ++e) {
-        const auto slot = static_cast<std::size_t>(e);
-        const auto i = static_cast<std::size_t>(psi.column[slot]);
-        v[i] += reflect(impulse, psi.mirror[slot]) * (psi.value[slot] / mass_[i]);
-      }
+      spreadImpulse(psi, mass_, k, impulse, v);
     }
     if (pass == 0) first = total;
     if (!(total > 1e-3 * first)) break;

@@ -202,16 +202,27 @@ Kernels buildKernels(const KernelInput& in) {
   return k;
 }
 
+Vec3 valueAt(const Table<double>& psi, std::span<const Vec3> coefficients, LocalIndex k) {
+  Vec3 sum = Vec3::Zero();
+  for (LocalIndex e = psi.offset[k]; e < psi.offset[k + 1]; ++e) {
+    const auto slot = static_cast<std::size_t>(e);
+    sum += psi.value[slot] * reflect(coefficients[static_cast<std::size_t>(psi.column[slot])], psi.mirror[slot]);
+  }
+  return sum;
+}
+
 void interpolate(const Table<double>& psi, std::span<const Vec3> coefficients, std::span<Vec3> out) {
   const LocalIndex n = psi.rows();
 #pragma omp parallel for schedule(static)
-  for (LocalIndex k = 0; k < n; ++k) {
-    Vec3 sum = Vec3::Zero();
-    for (LocalIndex e = psi.offset[k]; e < psi.offset[k + 1]; ++e) {
-      const auto slot = static_cast<std::size_t>(e);
-      sum += psi.value[slot] * reflect(coefficients[static_cast<std::size_t>(psi.column[slot])], psi.mirror[slot]);
-    }
-    out[k] = sum;
+  for (LocalIndex k = 0; k < n; ++k) out[k] = valueAt(psi, coefficients, k);
+}
+
+void spreadImpulse(const Table<double>& psi, std::span<const double> mass, LocalIndex k, const Vec3& impulse,
+                   std::span<Vec3> coefficient_v) {
+  for (LocalIndex e = psi.offset[k]; e < psi.offset[k + 1]; ++e) {
+    const auto slot = static_cast<std::size_t>(e);
+    const auto i = static_cast<std::size_t>(psi.column[slot]);
+    coefficient_v[i] += reflect(impulse, psi.mirror[slot]) * (psi.value[slot] / mass[i]);
   }
 }
 

@@ -63,5 +63,13 @@ Kernels buildKernels(const KernelInput& in);
 // The particles' values from the coefficients, out_K = sum_I Psi_I(X_K) chat_I (an image's
 // coefficient reflected): their positions from xhat, their velocities from vhat.
 void interpolate(const Table<double>& psi, std::span<const Vec3> coefficients, std::span<Vec3> out);
+// The same for particle k alone.
+Vec3 valueAt(const Table<double>& psi, std::span<const Vec3> coefficients, LocalIndex k);
+
+// An impulse on particle k handed to the coefficients as a force is, through the shape functions:
+// vhat_I += Psi_I(X_k) impulse / m_I (an image's share reflected onto its particle). The
+// coefficients' momentum sum_I m_I vhat_I gains the impulse exactly (the shape functions sum to one).
+void spreadImpulse(const Table<double>& psi, std::span<const double> mass, LocalIndex k, const Vec3& impulse,
+                   std::span<Vec3> coefficient_v);
 
 }  // namespace kessler::rkpm

@@ -10,17 +10,6 @@ namespace kessler::rkpm {
 
 namespace {
 
-// Component `axis` of the velocity of particle k: sum_I Psi_I(X_k) vhat_I, an image's reflected.
-double particleVelocity(const Table<double>& psi, std::span<const Vec3> coefficient_v, LocalIndex k, int axis) {
-  double v = 0.0;
-  for (LocalIndex e = psi.offset[k]; e < psi.offset[k + 1]; ++e) {
-    const auto slot = static_cast<std::size_t>(e);
-    const double sign = psi.mirror[slot] & (1u << axis) ? -1.0 : 1.0;
-    v += sign * psi.value[slot] * coefficient_v[static_cast<std::size_t>(psi.column[slot])][axis];
-  }
-  return v;
-}
-
 // One wall's impulses on the particles `touching`, each to its normal velocity `target`; returns the
 // impulses (positive: pushing along the wall's side).
 Eigen::VectorXd solveImpulses(const RigidWall& wall, const Table<double>& psi, std::span<const double> mass,
@@ -37,7 +26,7 @@ Eigen::VectorXd solveImpulses(const RigidWall& wall, const Table<double>& psi, s
       const double sign = psi.mirror[slot] & (1u << wall.axis) ? -1.0 : 1.0;
       entries.emplace_back(static_cast<int>(r), static_cast<int>(psi.column[slot]), sign * psi.value[slot]);
     }
-    rhs[r] = target[static_cast<std::size_t>(r)] - particleVelocity(psi, coefficient_v, k, wall.axis);
+    rhs[r] = target[static_cast<std::size_t>(r)] - valueAt(psi, coefficient_v, k)[wall.axis];
   }
   Eigen::SparseMatrix<double> P(m, n);
   P.setFromTriplets(entries.begin(), entries.end());
@@ -67,7 +56,7 @@ std::size_t imposeWalls(std::span<const RigidWall> walls, const Table<double>& p
     std::vector<double> target;
     for (LocalIndex k = 0; k < n; ++k) {
       const double distance = wall.side * (x[static_cast<std::size_t>(k)][wall.axis] - wall.position) - gap[k];
-      const double normal = wall.side * particleVelocity(psi, coefficient_v, k, wall.axis);
+      const double normal = wall.side * valueAt(psi, coefficient_v, k)[wall.axis];
       if (distance + dt * normal >= 0.0) continue;
       touching.push_back(k);
       target.push_back(-wall.side * distance / dt);
@@ -90,13 +79,9 @@ std::size_t imposeWalls(std::span<const RigidWall> walls, const Table<double>& p
     }
     if (impulse.size() == 0) continue;
     for (std::size_t r = 0; r < touching.size(); ++r) {
-      const LocalIndex k = touching[r];
-      for (LocalIndex e = psi.offset[k]; e < psi.offset[k + 1]; ++e) {
-        const auto slot = static_cast<std::size_t>(e);
-        const auto i = static_cast<std::size_t>(psi.column[slot]);
-        const double sign = psi.mirror[slot] & (1u << wall.axis) ? -1.0 : 1.0;
-        coefficient_v[i][wall.axis] += sign * psi.value[slot] * impulse[static_cast<Eigen::Index>(r)] / mass[i];
-      }
+      Vec3 push = Vec3::Zero();
+      push[wall.axis] = impulse[static_cast<Eigen::Index>(r)];
+      spreadImpulse(psi, mass, touching[r], push, coefficient_v);
     }
     pushed += touching.size();
   }
