@@ -55,7 +55,7 @@ asan() {
   # Only what the unit tests and the impact run need: the benches and multi-rank tests are not run here.
   cmake --build build-asan -j"$(nproc)" --target unit_tests
   OMP_WAIT_POLICY=passive ctest --test-dir build-asan -L unit -j"$(nproc)" --output-on-failure
-  build-asan/src/app/kessler run examples/elastic-sphere-plate.yaml --out build-asan/example-1us \
+  build-asan/src/app/kessler run tests/data/decks/elastic-sphere-plate.yaml --out build-asan/example-1us \
     --set solver.end_time="1 us" --set output.every="0.5 us" --quiet
   echo "asan: unit tests and a 1 us impact ran clean"
 }
@@ -112,7 +112,7 @@ case "${1:-}" in
   example)
     install_missing "${packages[@]}"
     build
-    build/src/app/kessler run examples/elastic-sphere-plate.yaml
+    build/src/app/kessler run examples/sphere-plate.yaml
     ;;
   test)
     install_missing "${packages[@]}"

@@ -67,6 +67,16 @@ ShieldComparison compareShield(const ParticleState& model, const ImpactGeometry&
   return c;
 }
 
+// Did anything break? A body that is no longer one fragment, or that lost points to erosion or
+// came apart below the resolution (eroded_mass), has made debris.
+bool anythingBroke(const FragmentSet& set, std::size_t bodies) {
+  std::vector<int> pieces(bodies, 0);
+  for (const Fragment& f : set.fragments) ++pieces[static_cast<std::size_t>(f.body)];
+  for (std::size_t b = 0; b < bodies; ++b)
+    if (pieces[b] != 1 || set.eroded_mass[b] > 0.0) return true;
+  return false;
+}
+
 }  // namespace
 
 Report analyse(const ParticleState& model, const ImpactGeometry& geometry, const std::vector<double>& reference_lengths,
@@ -92,13 +102,16 @@ Report analyse(const ParticleState& model, const ImpactGeometry& geometry, const
     report.breakup = nasaBreakup(*report.event);
   }
 
-  for (int i = 0; i < static_cast<int>(geometry.plates.size()); ++i)
-    report.holes.push_back(measureHole(model, geometry, i));
-  report.clouds = measureClouds(model, geometry);
-  report.ejecta = measureEjecta(model, geometry);
+  report.debris = anythingBroke(report.fragments, model.bodies.size());
+  if (report.debris) {
+    for (int i = 0; i < static_cast<int>(geometry.plates.size()); ++i)
+      report.holes.push_back(measureHole(model, geometry, i));
+    report.clouds = measureClouds(model, geometry);
+    report.ejecta = measureEjecta(model, geometry);
+  }
   if (!geometry.plates.empty()) {
     report.rear_wall = measureRearWall(model, report.fragments, geometry);
-    if (projectile_mass > 0.0 && geometry.impact_speed > 0.0)
+    if (report.debris && projectile_mass > 0.0 && geometry.impact_speed > 0.0)
       report.shield = compareShield(model, geometry, wall, projectile_mass, *report.rear_wall);
   }
   return report;

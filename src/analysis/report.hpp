@@ -39,6 +39,10 @@ struct ShieldComparison {
 };
 
 struct Report {
+  // False when nothing broke: every body is still one piece and no point failed or came loose.
+  // Then there is no hole, debris cloud, back-splash or ballistic-limit verdict to report, and
+  // holes, clouds, ejecta and shield stay empty.
+  bool debris = true;
   std::vector<std::string> body_names;
   std::vector<std::string> material_names;
   ImpactGeometry geometry;

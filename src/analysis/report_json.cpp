@@ -131,6 +131,7 @@ json shieldJson(const ShieldComparison& s) {
 
 nlohmann::json toJson(const Report& r) {
   json out = json::object();
+  out["debris"] = r.debris;
   out["fragments"] = fragmentsJson(r);
   if (r.breakup) out["breakup_model"] = breakupJson(r);
   json holes = json::array();

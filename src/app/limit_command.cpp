@@ -147,10 +147,13 @@ void runLimit(const LimitArguments& args) {
       const fs::path dir = out / fmt::format("v{:.2f}_d{:.2f}", kms, d / mm);
       const Trial t = runTrial(base, projectile, speed, d, dir, args.threads);
       ++runs;
-      christiansen = t.christiansen;
-      obliquity = t.obliquity;
-      trials << fmt::format("{},{},{},{},{},{:.1f}\n", speed, d, t.classification, t.failed ? 1 : 0, t.christiansen,
-                            t.seconds);
+      // A trial where nothing broke has no ballistic-limit verdict (analysis "debris": false).
+      if (t.christiansen > 0.0) {
+        christiansen = t.christiansen;
+        obliquity = t.obliquity;
+      }
+      trials << fmt::format("{},{},{},{},{},{:.1f}\n", speed, d, t.classification, t.failed ? 1 : 0,
+                            t.christiansen > 0.0 ? fmt::format("{}", t.christiansen) : "", t.seconds);
       trials.flush();
       log::info("  {:.2f} km/s, d = {:.2f} mm: rear wall {} ({}), {:.0f} s", kms, d / mm, t.classification,
                 t.failed ? "fails" : "holds", t.seconds);

@@ -22,7 +22,7 @@ struct Whipple {
 
 // A 1 mm bumper (front face z = 0), a 2 mm rear wall 10 mm behind it, and a 2 mm cube of
 // projectile material between them; the bumper has a 3 mm hole.
-Whipple whipple() {
+Whipple whipple(bool holed = true) {
   Whipple w;
   const Vec3 down(0, 0, -1);
   const geometry::Box bumper{Vec3(-8 * mm, -8 * mm, -1 * mm), Vec3(8 * mm, 8 * mm, 0)};
@@ -33,7 +33,7 @@ Whipple whipple() {
       testing::addBlock(w.model, "projectile", {Vec3(-1 * mm, -1 * mm, -6 * mm), Vec3(1 * mm, 1 * mm, -4 * mm)},
                         {4, 4, 4}, testing::aluminium(), Vec3(0, 0, -5000.0));
   w.lengths = referenceLinkLengths(w.model);
-  testing::erodeWhere(w.model, b, [](const Vec3& x) { return x.head<2>().norm() < 1.5 * mm; });
+  if (holed) testing::erodeWhere(w.model, b, [](const Vec3& x) { return x.head<2>().norm() < 1.5 * mm; });
   w.geometry.shot_direction = down;
   w.geometry.impact_speed = 5000.0;
   w.geometry.projectile_bodies = {p};
@@ -44,6 +44,7 @@ Whipple whipple() {
 TEST(Report, WhippleSummary) {
   const Whipple w = whipple();
   const Report report = analyse(w.model, w.geometry, w.lengths);
+  EXPECT_TRUE(report.debris);
   ASSERT_EQ(report.holes.size(), 2u);
   EXPECT_TRUE(report.holes[0].found);
   EXPECT_NEAR(report.holes[0].ellipse.equivalent_diameter, 3 * mm, report.holes[0].cell);
@@ -73,6 +74,34 @@ TEST(Report, WhippleSummary) {
   const std::string text = formatReport(report);
   EXPECT_NE(text.find("hole in bumper"), std::string::npos) << text;
   EXPECT_NE(text.find("Christiansen"), std::string::npos) << text;
+}
+
+// Nothing broke (the bumper without its hole, every body one piece): no hole, cloud, back-splash
+// or ballistic-limit verdict, and the text says "no debris". The rear wall is still classified.
+TEST(Report, NothingBrokeReportsNoDebris) {
+  const Whipple w = whipple(false);
+  const Report report = analyse(w.model, w.geometry, w.lengths);
+  EXPECT_FALSE(report.debris);
+  EXPECT_TRUE(report.holes.empty());
+  EXPECT_TRUE(report.clouds.empty());
+  EXPECT_EQ(report.ejecta.points, 0);
+  EXPECT_FALSE(report.shield.has_value());
+  ASSERT_TRUE(report.rear_wall.has_value());
+  EXPECT_EQ(report.rear_wall->classification, "none");
+  const nlohmann::json j = toJson(report);
+  EXPECT_FALSE(j.at("debris").get<bool>());
+  EXPECT_FALSE(j.contains("ballistic_limit"));
+  EXPECT_TRUE(j.at("debris_clouds").empty());
+  const std::string text = formatReport(report);
+  EXPECT_NE(text.find("no debris"), std::string::npos) << text;
+  EXPECT_EQ(text.find("leading edge"), std::string::npos) << text;  // no cloud line
+  EXPECT_EQ(text.find("hole in"), std::string::npos) << text;
+  EXPECT_EQ(text.find("Christiansen"), std::string::npos) << text;
+
+  // One point of the bumper eroded is debris.
+  Whipple chipped = whipple(false);
+  ASSERT_GT(testing::erodeWhere(chipped.model, 0, [](const Vec3& x) { return x.head<2>().norm() < 0.4 * mm; }), 0);
+  EXPECT_TRUE(analyse(chipped.model, chipped.geometry, chipped.lengths).debris);
 }
 
 TEST(Report, FragmentFilesHaveUnitsAndOneRowPerFragment) {
