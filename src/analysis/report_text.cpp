@@ -36,8 +36,9 @@ std::string formatReport(const Report& r) {
   std::string out;
   line(out, "Impact analysis");
   if (!r.debris)
-    line(out, "  no debris            every body is still one piece and nothing failed: no hole, cloud or "
-              "ballistic-limit verdict");
+    line(out,
+         "  no debris            every body is still one piece and nothing failed: no hole, cloud or "
+         "ballistic-limit verdict");
   for (const HoleMeasurement& h : r.holes) printHole(out, r, h);
   for (const CloudMeasurement& c : r.clouds) {
     if (c.points == 0) continue;

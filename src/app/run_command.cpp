@@ -8,13 +8,9 @@
 #include "io/deck.hpp"
 
 #include <fmt/format.h>
-#include <fmt/ranges.h>
 
-#include <algorithm>
-#include <array>
 #include <filesystem>
 #include <memory>
-#include <string_view>
 
 namespace kessler::app {
 
@@ -29,45 +25,13 @@ struct RunArguments {
   std::string restart;
 };
 
-// What a restart may change: when and how long to run, and the checks. Everything else is the
-// model the checkpoint holds.
-constexpr std::array<std::string_view, 7> restart_keys = {
-    "solver.end_time", "solver.max_steps", "solver.min_dt_fraction",  "solver.max_energy_growth",
-    "output.every",    "checkpoint.every", "checkpoint.wall_interval"};
-
-void checkRestartOverride(const std::string& text) {
-  std::string key = text.substr(0, text.find('='));
-  key.erase(0, key.find_first_not_of(" \t"));
-  key.erase(key.find_last_not_of(" \t") + 1);
-  if (std::find(restart_keys.begin(), restart_keys.end(), key) == restart_keys.end())
-    throw InputError(
-        fmt::format("command line (--set {}): a restart continues the model of its checkpoint; only "
-                    "these may change: {}",
-                    text, fmt::join(restart_keys, ", ")));
-}
-
-// The run folder's resolved deck with the allowed overrides; the folder stays the run's folder.
-io::RunConfig restartConfig(const RunArguments& args) {
-  const std::filesystem::path dir = args.restart;
-  if (!std::filesystem::is_directory(dir))
-    throw InputError(fmt::format("--restart {}: no such run folder", args.restart));
-  const std::filesystem::path deck = dir / "deck.resolved.yaml";
-  if (!std::filesystem::is_regular_file(deck))
-    throw InputError(
-        fmt::format("--restart {}: no deck.resolved.yaml, so this is not a Kessler run folder", args.restart));
-  for (const std::string& text : args.sets) checkRestartOverride(text);
-  io::RunConfig config = io::parseDeck(deck, args.sets);
-  config.output.dir = args.restart;
-  return config;
-}
-
 void runDeck(const RunArguments& args) {
   if (args.quiet) log::setLevel(log::Level::quiet);
   if (args.restart.empty() == args.deck.empty())
     throw InputError("kessler run needs a deck, or --restart DIR to continue a run (not both)");
   const bool restart = !args.restart.empty();
   if (restart && !args.out.empty()) throw InputError("--restart DIR continues the run in DIR: --out does not apply");
-  io::RunConfig config = restart ? restartConfig(args) : io::parseDeck(args.deck, args.sets);
+  io::RunConfig config = restart ? restartConfig(args.restart, args.sets) : io::parseDeck(args.deck, args.sets);
   if (!args.out.empty()) config.output.dir = args.out;
   const RunOutcome outcome =
       runSimulation(config, RunOptions{.threads = args.threads, .progress = !args.quiet, .restart = restart});

@@ -67,6 +67,7 @@ class Run {
     if (root()) io::writeSummary(dir_ / "summary.json", record_, *run);
   }
   void printSummary() const;
+  bool report() const { return options_.on_progress({steps(), time(), config_.solver.end_time, lastStep()}); }
   // The impact measurements into the summary (before finish() writes it) and the pictures after.
   void analyse(const std::string& state) {
     const Method* run = whole();
@@ -79,7 +80,7 @@ class Run {
   const io::RunConfig& config_;
   RunOptions options_;
   std::filesystem::path dir_, checkpoint_file_;
-  Stopwatch wall_, since_checkpoint_;
+  Stopwatch wall_, since_checkpoint_, since_report_;
   const parallel::Communicator& world_ = parallel::Communicator::world();
   std::unique_ptr<Method> method_;
   std::unique_ptr<Method> gathered_;  // a distributed run's whole state, on rank 0 (whole())
@@ -114,6 +115,7 @@ RunOutcome Run::execute() {
   if (root()) writer_ = std::make_unique<io::FieldWriter>(dir_);
   if (options_.restart) resume();  // before the try: a bad checkpoint leaves the run folder alone
   std::optional<Progress> progress;
+  bool caller_stop = false;
   try {
     if (!options_.restart) start();
     progress.emplace(config_.solver.end_time, points_, options_.progress && root());
@@ -123,18 +125,23 @@ RunOutcome Run::execute() {
         break;
       }
       // mpirun passes a signal to every rank, not at the same step: they stop together.
-      if (world_.any(StopSignals::received() != 0)) {
+      if (world_.any(StopSignals::received() != 0 || caller_stop)) {
         stop_ = Stop::signal;
         break;
       }
       advance();
       progress->update(steps(), time(), lastStep());
+      if (options_.on_progress && root() && since_report_.seconds() >= options_.report_interval) {
+        caller_stop = !report();
+        since_report_.restart();
+      }
     }
   } catch (const NumericalError& e) {
     if (progress) progress->finish(steps(), time(), lastStep());
     fail(e);
   }
   progress->finish(steps(), time(), lastStep());
+  if (options_.on_progress && root() && stop_ == Stop::none && method_) report();
 
   // The checkpoint comes before any extra output, so that a restart continues exactly as the run
   // would have gone on (with the history and output series it would have had).
@@ -142,12 +149,14 @@ RunOutcome Run::execute() {
   const std::string restart_hint = fmt::format("kessler run --restart {}", dir_.string());
   if (stop_ == Stop::signal) {
     const int signal = StopSignals::received() != 0 ? StopSignals::received() : SIGINT;
+    const bool by_caller = caller_stop && StopSignals::received() == 0;
     record_.status = "interrupted";
-    record_.message = fmt::format("stopped by {} at step {}, t = {:.6g} s; a checkpoint is in {}", signalName(signal),
-                                  steps(), time(), checkpoint_file_.string());
+    record_.message =
+        fmt::format("stopped by {} at step {}, t = {:.6g} s; a checkpoint is in {}",
+                    by_caller ? "the caller" : signalName(signal), steps(), time(), checkpoint_file_.string());
     finish();
     log::info("kessler: {}; continue with: {}", record_.message, restart_hint);
-    return {dir_, 128 + signal};
+    return {dir_, 128 + signal, by_caller};
   }
   if (record_.history.back().step != steps()) {
     appendHistory();
