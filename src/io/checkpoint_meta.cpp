@@ -32,6 +32,7 @@ json gridsJson(const std::vector<XdmfGrid>& grids) {
                    {"time", g.time},
                    {"vertices", g.vertices},
                    {"geometry", itemJson(g.geometry)},
+                   {"topology", itemJson(g.topology)},
                    {"attributes", attributes}});
   }
   return all;
@@ -44,7 +45,9 @@ std::vector<XdmfGrid> gridsFrom(const json& all) {
                .time = j.at("time").get<double>(),
                .vertices = j.at("vertices").get<Index>(),
                .geometry = itemFrom(j.at("geometry")),
-               .attributes = {}};
+               .attributes = {},
+               // (absent in checkpoints written before the outputs named their vertex cells)
+               .topology = j.contains("topology") ? itemFrom(j.at("topology")) : XdmfDataItem{}};
     for (const json& a : j.at("attributes"))
       g.attributes.push_back(
           {a.at("name").get<std::string>(), a.at("type").get<std::string>(), itemFrom(a.at("data"))});

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <numeric>
 #include <span>
 #include <string>
 #include <system_error>
@@ -42,9 +43,16 @@ class GridWriter {
     grid_.vertices = static_cast<Index>(count_);
   }
 
+  // The positions, and the vertex cells ParaView draws them with (XdmfGrid::topology).
   void geometry(std::span<const Vec3> x) {
     h5_.writeDataset(dataset("position"), flatten(x), {count_, 3});
     grid_.geometry = xdmfItem<double>({grid_.vertices, 3}, source("position"));
+    KESSLER_VERIFY(count_ < (hsize_t{1} << 31), "{} vertices in one output: more than 32-bit cell indices hold",
+                   count_);
+    std::vector<std::int32_t> cells(count_);
+    std::iota(cells.begin(), cells.end(), 0);
+    h5_.writeDataset(dataset("vertex"), std::span<const std::int32_t>(cells), {count_});
+    grid_.topology = xdmfItem<std::int32_t>({grid_.vertices}, source("vertex"));
   }
 
   void vector(const std::string& name, std::span<const Vec3> values) {

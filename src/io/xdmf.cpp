@@ -9,10 +9,9 @@ namespace kessler::io {
 namespace {
 
 void appendDataItem(std::string& out, const XdmfDataItem& item, int indent) {
-  fmt::format_to(
-      std::back_inserter(out),
-      "{:{}}<DataItem Dimensions=\"{}\" NumberType=\"{}\" Precision=\"{}\" Format=\"HDF\">{}</DataItem>\n",
-      "", indent, fmt::join(item.dims, " "), item.number_type, item.precision, item.source);
+  fmt::format_to(std::back_inserter(out),
+                 "{:{}}<DataItem Dimensions=\"{}\" NumberType=\"{}\" Precision=\"{}\" Format=\"HDF\">{}</DataItem>\n",
+                 "", indent, fmt::join(item.dims, " "), item.number_type, item.precision, item.source);
 }
 
 void appendGrid(std::string& out, const XdmfGrid& grid) {
@@ -20,15 +19,19 @@ void appendGrid(std::string& out, const XdmfGrid& grid) {
   fmt::format_to(line, "      <Grid Name=\"{}\" GridType=\"Uniform\">\n", grid.name);
   // The shortest representation that reads back to the same double.
   fmt::format_to(line, "        <Time Value=\"{}\"/>\n", grid.time);
-  fmt::format_to(
-      line, "        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"{}\" NodesPerElement=\"1\"/>\n",
-      grid.vertices);
+  fmt::format_to(line,
+                 "        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"{}\" NodesPerElement=\"1\"{}>\n",
+                 grid.vertices, grid.topology.source.empty() ? "/" : "");
+  if (!grid.topology.source.empty()) {
+    appendDataItem(out, grid.topology, 10);
+    out += "        </Topology>\n";
+  }
   out += "        <Geometry GeometryType=\"XYZ\">\n";
   appendDataItem(out, grid.geometry, 10);
   out += "        </Geometry>\n";
   for (const XdmfAttribute& attribute : grid.attributes) {
-    fmt::format_to(line, "        <Attribute Name=\"{}\" AttributeType=\"{}\" Center=\"Node\">\n",
-                   attribute.name, attribute.type);
+    fmt::format_to(line, "        <Attribute Name=\"{}\" AttributeType=\"{}\" Center=\"Node\">\n", attribute.name,
+                   attribute.type);
     appendDataItem(out, attribute.data, 10);
     out += "        </Attribute>\n";
   }

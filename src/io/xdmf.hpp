@@ -35,6 +35,10 @@ struct XdmfGrid {
   Index vertices = 0;
   XdmfDataItem geometry;  // {vertices, 3} positions
   std::vector<XdmfAttribute> attributes;
+  // {vertices} indices 0..n-1: one vertex cell per point. ParaView's Xdmf3 readers make no cells
+  // (so draw nothing) from a Polyvertex topology without them. Empty in outputs of runs written
+  // before it existed (then the XDMF names none, as before).
+  XdmfDataItem topology;
 };
 
 // The XDMF number type and precision of a C++ value type.

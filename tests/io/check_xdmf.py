@@ -82,7 +82,12 @@ def check_file(xdmf_path, problems):
         if geometry.get("GeometryType") != "XYZ":
             problems.append(f"{where}: geometry is not XYZ")
         vertices = int(topology.get("NumberOfElements", "-1"))
+        # One vertex cell per point: without them ParaView's Xdmf3 readers draw nothing.
+        cells = topology.findall("DataItem")
+        if len(cells) != 1:
+            problems.append(f"{where}: the Polyvertex topology names no vertex cells (a DataItem)")
         items = [(f"{where} geometry", item) for item in geometry.findall("DataItem")]
+        items += [(f"{where} topology", item) for item in cells]
         for attribute in grid.findall("Attribute"):
             if attribute.get("Center") != "Node":
                 problems.append(f"{where}: attribute {attribute.get('Name')} is not Center=\"Node\"")

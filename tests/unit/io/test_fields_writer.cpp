@@ -241,7 +241,7 @@ void checkXdmf(const fs::path& xdmf, const std::vector<double>& times, hsize_t c
   EXPECT_EQ(found_times, times);
 
   const std::regex topology_pattern(
-      R"re(<Topology TopologyType="Polyvertex" NumberOfElements="(\d+)" NodesPerElement="1"/>)re");
+      R"re(<Topology TopologyType="Polyvertex" NumberOfElements="(\d+)" NodesPerElement="1">\s*<DataItem )re");
   int topologies = 0;
   for (std::sregex_iterator m(text.begin(), text.end(), topology_pattern), end; m != end; ++m, ++topologies)
     EXPECT_EQ(std::stoull((*m)[1]), count);
