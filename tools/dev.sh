@@ -14,7 +14,7 @@ cd "$(dirname "$0")/.."
 packages=(build-essential cmake ninja-build pkg-config libeigen3-dev libyaml-cpp-dev libfmt-dev libcli11-dev
           libhdf5-dev libgmsh-dev nlohmann-json3-dev googletest libgtest-dev python3 python3-numpy
           python3-h5py python3-matplotlib libbenchmark-dev libopenmpi-dev openmpi-bin libtrilinos-zoltan-dev
-          libptscotch-dev python3-dev pybind11-dev python3-pytest paraview python3-paraview)
+          libptscotch-dev python3-dev pybind11-dev python3-pytest paraview python3-paraview xvfb xauth python3-yaml)
 # Only for `fuzz` and `tsan`: clang with its sanitizer and libFuzzer runtimes, and its OpenMP (with Archer).
 fuzz_packages=(clang libclang-rt-14-dev libomp-dev)
 

@@ -21,6 +21,7 @@ void addCommands(CLI::App& app) {
   addEosTableCommand(app);
   addBenchCommand(app);
   addLimitCommand(app);
+  addRenderCommand(app);
 }
 
 }  // namespace kessler::app

@@ -10,6 +10,7 @@ void addVerifyCommand(CLI::App& app);
 void addRunCommands(CLI::App& app);  // run and check
 void addBenchCommand(CLI::App& app);
 void addLimitCommand(CLI::App& app);  // the simulated ballistic limit
+void addRenderCommand(CLI::App& app);  // ParaView pictures of a run
 
 void setExitCode(int code);
 int exitCode();

@@ -1,6 +1,7 @@
 #include "app/impact_analysis.hpp"
 
 #include "analysis/report.hpp"
+#include "app/scripts.hpp"
 #include "core/error.hpp"
 #include "core/log.hpp"
 #include "core/timer.hpp"
@@ -58,18 +59,6 @@ analysis::ImpactGeometry impactGeometry(const io::RunConfig& config, const Parti
   return g;
 }
 
-fs::path plotsDir() {
-  if (const char* env = std::getenv("KESSLER_PLOTS_DIR"); env != nullptr && *env != '\0') return env;
-  return KESSLER_SOURCE_PLOTS_DIR;
-}
-
-// Single-quoted for the shell.
-std::string quoted(const std::string& text) {
-  std::string out = "'";
-  for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
-
 }  // namespace
 
 nlohmann::json analyseImpact(const io::RunConfig& config, const ParticleState& model, const fs::path& dir,
@@ -122,8 +111,8 @@ void drawPlots(const fs::path& dir, std::initializer_list<const char*> scripts_t
     // The fragment pictures need the fragment files, written only when the analysis ran.
     if (std::string(script) == "fragments.py" && !fs::exists(dir / "fragments.csv", error)) continue;
     if (std::string(script) == "back_projection.py" && !fs::exists(dir / "fragment_points.csv", error)) continue;
-    const std::string command = fmt::format("{} {} {} >>{} 2>&1", system_python, quoted(path.string()),
-                                            quoted(dir.string()), quoted(log_file.string()));
+    const std::string command = fmt::format("{} {} {} >>{} 2>&1", system_python, shellQuoted(path.string()),
+                                            shellQuoted(dir.string()), shellQuoted(log_file.string()));
     if (std::system(command.c_str()) != 0)
       warn(fmt::format("{} failed (see {})", script, log_file.string()));
     else

@@ -4,6 +4,7 @@
 #include "app/methods.hpp"
 #include "app/progress.hpp"
 #include "app/run_folder.hpp"
+#include "app/scripts.hpp"
 #include "app/signals.hpp"
 #include "core/error.hpp"
 #include "core/log.hpp"
@@ -73,8 +74,11 @@ class Run {
     const Method* run = whole();
     if (root()) record_.analysis = analyseImpact(config_, run->state(), dir_, state);
   }
+  // The pictures of tools/plots and the ParaView state (analysis.plots switches both).
   void plots() const {
-    if (root() && config_.analysis.enabled && config_.analysis.plots) drawPlots(dir_);
+    if (!root() || !config_.analysis.plots) return;
+    if (config_.analysis.enabled) drawPlots(dir_);
+    writeParaViewState(dir_);
   }
 
   const io::RunConfig& config_;

@@ -1,0 +1,60 @@
+#include "app/scripts.hpp"
+
+#include "core/log.hpp"
+
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+
+namespace kessler::app {
+
+namespace fs = std::filesystem;
+
+fs::path plotsDir() {
+  if (const char* env = std::getenv("KESSLER_PLOTS_DIR"); env != nullptr && *env != '\0') return env;
+  return KESSLER_SOURCE_PLOTS_DIR;
+}
+
+std::string shellQuoted(const std::string& text) {
+  std::string out = "'";
+  for (const char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+std::optional<fs::path> findProgram(const std::string& name) {
+  const char* path = std::getenv("PATH");
+  std::istringstream folders(path != nullptr ? path : "/usr/bin:/bin");
+  std::error_code error;
+  for (std::string folder; std::getline(folders, folder, ':');) {
+    if (folder.empty()) continue;
+    const fs::path candidate = fs::path(folder) / name;
+    if (fs::is_regular_file(candidate, error) &&
+        (fs::status(candidate, error).permissions() & fs::perms::owner_exec) != fs::perms::none)
+      return candidate;
+  }
+  return std::nullopt;
+}
+
+void writeParaViewState(const fs::path& dir) {
+  const std::optional<fs::path> pvpython = findProgram("pvpython");
+  if (!pvpython) {
+    log::info("no ParaView state (kessler.pvsm): pvpython not found (Debian: apt-get install paraview)");
+    return;
+  }
+  std::error_code error;
+  fs::create_directories(dir / "plots", error);
+  const fs::path log_file = dir / "plots" / "paraview.log";
+  const std::string command = fmt::format("{} {} state {} >>{} 2>&1", shellQuoted(pvpython->string()),
+                                          shellQuoted((plotsDir() / "paraview_view.py").string()),
+                                          shellQuoted(dir.string()), shellQuoted(log_file.string()));
+  if (std::system(command.c_str()) != 0) {
+    fmt::print(stderr, "kessler: warning: the ParaView state was not written (see {})\n", log_file.string());
+    std::fflush(stderr);
+    return;
+  }
+  log::info("ParaView: File > Load State > {}", (dir / "kessler.pvsm").string());
+}
+
+}  // namespace kessler::app
