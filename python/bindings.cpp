@@ -135,6 +135,8 @@ PYBIND11_MODULE(_kessler, m) {
   m.def("run", &python::run, py::arg("deck"), py::arg("threads") = 0, py::arg("quiet") = false,
         py::arg("restart") = false, py::arg("callback") = py::none(), py::arg("interval") = 0.2);
   m.def("methods", &methodNames);
+  m.def(
+      "program", [] { return std::string(KESSLER_PROGRAM); }, "The kessler program built with this module.");
   m.def("verify_problems", [] {
     std::vector<std::pair<std::string, std::string>> list;
     for (const verify::Check& p : verify::problems()) list.emplace_back(p.name, p.description);

@@ -12,7 +12,7 @@ the same run folder, restartable from the command line or from here.
 
 from ._core import _kessler
 from .results import Results
-from .runs import deck, restart, run, verify
+from .runs import bench, deck, restart, run, verify
 
 InputError = _kessler.InputError
 NumericalError = _kessler.NumericalError
@@ -25,5 +25,10 @@ def methods():
     return list(_kessler.methods())
 
 
-__all__ = ["Deck", "Error", "InputError", "NumericalError", "Results", "deck", "methods", "restart", "run",
-           "verify"]
+def program():
+    """The path of the kessler program this module was built with."""
+    return _kessler.program()
+
+
+__all__ = ["Deck", "Error", "InputError", "NumericalError", "Results", "bench", "deck", "methods", "program",
+           "restart", "run", "verify"]

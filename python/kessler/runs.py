@@ -1,8 +1,10 @@
-"""Decks and runs: kessler.deck, kessler.run, kessler.restart, kessler.verify."""
+"""Decks and runs: kessler.deck, kessler.run, kessler.restart, kessler.verify, kessler.bench."""
 
 import json
 import os
+import subprocess
 import sys
+import tempfile
 import time as _time
 
 from ._core import _kessler
@@ -150,3 +152,28 @@ def verify(names=None, method="otm", progress=True):
 
     texts = _kessler.verify(list(names or []), method, show if progress else None)
     return [json.loads(t) for t in texts]
+
+
+def bench(names=None, size="small", threads=0, steps=0, sets=None):
+    """Runs `kessler bench` (docs/performance.md): each problem (hvi-100k, hvi-1m, pysph-impact3d;
+    all by default) in a fresh process of the kessler program, at size "tiny", "small" or "full".
+    Returns its JSON as a dict: per problem the points, steps, us_per_point_step, peak memory per point
+    and the time of each phase. Time it against something else in the same session only: machines
+    are noisy."""
+    if isinstance(names, str):
+        names = [names]
+    with tempfile.TemporaryDirectory() as folder:
+        out = os.path.join(folder, "bench.json")
+        args = [_kessler.program(), "bench", *(names or []), "--size", size, "--json", out]
+        if threads:
+            args += ["--threads", str(threads)]
+        if steps:
+            args += ["--steps", str(steps)]
+        for setting in _overrides(sets):
+            args += ["--set", setting]
+        done = subprocess.run(args, capture_output=True, text=True)
+        if done.returncode != 0 and not os.path.exists(out):
+            message = (done.stderr or done.stdout).strip().splitlines()
+            raise _kessler.InputError(message[-1] if message else f"kessler bench failed ({done.returncode})")
+        with open(out) as f:
+            return json.load(f)

@@ -162,3 +162,12 @@ def test_verify_returns_the_measurements():
         kessler.verify(["no-such-problem"])
     with pytest.raises(kessler.InputError, match="not a method"):
         kessler.verify(["lme-consistency"], method="fem")
+
+
+def test_bench_measures_in_a_fresh_process():
+    result = kessler.bench("hvi-100k", size="tiny", threads=1)
+    [problem] = result["problems"]
+    assert problem["status"] == "ok" and problem["points"] > 1000
+    assert problem["us_per_point_step"] > 0 and problem["peak_model_bytes_per_point"] > 0
+    with pytest.raises(kessler.InputError, match="hvi-100k"):  # the error names the known problems
+        kessler.bench("no-such-problem", size="tiny")
