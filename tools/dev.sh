@@ -3,10 +3,10 @@
 #   tools/dev.sh example   runs the default example into results/
 #   tools/dev.sh test      runs the whole test suite (unit, verification, regression)
 #   tools/dev.sh build     only builds
-#   tools/dev.sh asan      AddressSanitizer + UBSan build (build-asan): unit tests and a short impact
+#   tools/dev.sh asan      AddressSanitizer + UBSan build with clang (build-asan): unit tests and a short impact
 #   tools/dev.sh tsan      ThreadSanitizer build with clang and LLVM's Archer (build-tsan): the threaded
 #                          kernels on 2 threads (thread-determinism, a short impact); fails on any race
-#   tools/dev.sh fuzz      libFuzzer build with clang (build-fuzz): each fuzzer for KESSLER_FUZZ_SECONDS
+#   tools/dev.sh fuzz      libFuzzer on the same build (build-asan): each fuzzer for KESSLER_FUZZ_SECONDS
 #                          (default 90) on a copy of its seed corpus; fails on any finding
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -15,7 +15,7 @@ packages=(build-essential cmake ninja-build pkg-config libeigen3-dev libyaml-cpp
           libhdf5-dev libgmsh-dev nlohmann-json3-dev googletest libgtest-dev python3 python3-numpy
           python3-h5py python3-matplotlib libbenchmark-dev libopenmpi-dev openmpi-bin libtrilinos-zoltan-dev
           libptscotch-dev python3-dev pybind11-dev python3-pytest paraview python3-paraview xvfb xauth python3-yaml)
-# Only for `fuzz` and `tsan`: clang with its sanitizer and libFuzzer runtimes, and its OpenMP (with Archer).
+# Only for `asan`, `fuzz` and `tsan`: clang with its sanitizer and libFuzzer runtimes, and its OpenMP (with Archer).
 fuzz_packages=(clang libclang-rt-14-dev libomp-dev)
 
 install_missing() {
@@ -66,11 +66,21 @@ sanitizer_environment() {
 sanitizer_flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG"
                  "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" -DKESSLER_PYTHON=OFF)
 
+# One AddressSanitizer + UBSan build with clang (build-asan) serves the unit tests and the fuzzers:
+# libFuzzer's coverage is compiled into everything (KESSLER_FUZZ), and only the fuzz targets link its
+# driver. Warnings stay warnings here (clang's differ from g++'s, which the main build holds to
+# -Werror); MPI is left out (the multi-rank tests are not run here, and the fuzzed readers never
+# reach it). One build instead of a g++ ASan build and a clang fuzz build saves CI a whole build.
+configure_asan() {
+  CC=clang CXX=clang++ cmake -S . -B build-asan -G Ninja "${sanitizer_flags[@]}" -DKESSLER_FUZZ=ON \
+    -DKESSLER_WERROR=OFF -DKESSLER_MPI=OFF >/dev/null
+}
+
 asan() {
   sanitizer_environment
-  cmake -S . -B build-asan -G Ninja "${sanitizer_flags[@]}" -DKESSLER_SANITIZE=ON >/dev/null
-  # Only what the unit tests and the impact run need: the benches and multi-rank tests are not run here.
-  cmake --build build-asan -j"$(nproc)" --target unit_tests
+  configure_asan
+  # Only what the unit tests, the impact run and the fuzzers need: not the benches.
+  cmake --build build-asan -j"$(nproc)" --target unit_tests fuzz_deck fuzz_sesame
   OMP_WAIT_POLICY=passive ctest --test-dir build-asan -L unit -j"$(nproc)" --output-on-failure
   build-asan/src/app/kessler run tests/data/decks/elastic-sphere-plate.yaml --out build-asan/example-1us \
     --set solver.end_time="1 us" --set output.every="0.5 us" --quiet
@@ -98,20 +108,17 @@ tsan() {
 fuzz() {
   sanitizer_environment
   local seconds=${KESSLER_FUZZ_SECONDS:-90}
-  # Warnings stay warnings here: clang's differ from g++'s, which the main build holds to -Werror.
-  # The fuzzed readers never reach MPI: the build leaves it out.
-  CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja "${sanitizer_flags[@]}" -DKESSLER_FUZZ=ON \
-    -DKESSLER_WERROR=OFF -DKESSLER_MPI=OFF >/dev/null
-  cmake --build build-fuzz -j"$(nproc)" --target fuzz_deck fuzz_sesame
+  configure_asan  # the build of `asan` (nothing to do after it)
+  cmake --build build-asan -j"$(nproc)" --target fuzz_deck fuzz_sesame
   local -A seeds=([deck]="tests/fuzz/corpus/deck tests/data/decks examples"
                   [sesame]="tests/fuzz/corpus/sesame tests/data/sesame")
   for target in deck sesame; do
     # New inputs go to a scratch copy (the first folder); the seed folders are only read.
-    local corpus=build-fuzz/corpus/$target artifacts=build-fuzz/artifacts/$target/
+    local corpus=build-asan/corpus/$target artifacts=build-asan/artifacts/$target/
     mkdir -p "$corpus" "$artifacts"
-    local log=build-fuzz/fuzz_$target.log status=0
+    local log=build-asan/fuzz_$target.log status=0
     # shellcheck disable=SC2086
-    build-fuzz/tests/fuzz/fuzz_$target "$corpus" ${seeds[$target]} -dict="tests/fuzz/$target.dict" \
+    build-asan/tests/fuzz/fuzz_$target "$corpus" ${seeds[$target]} -dict="tests/fuzz/$target.dict" \
       -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=8192 -print_final_stats=1 \
       -artifact_prefix="$artifacts" >"$log" 2>&1 || status=$?
     grep -E "^(INFO: Seed|#[0-9]+ +DONE|Done [0-9]+ runs|stat::number_of_executed_units|stat::peak_rss)" \
@@ -143,7 +150,7 @@ case "${1:-}" in
     build
     ;;
   asan)
-    install_missing "${packages[@]}"
+    install_missing "${packages[@]}" "${fuzz_packages[@]}"
     asan
     ;;
   tsan)

@@ -74,9 +74,12 @@ class CellList {
 
 inline std::array<int, 3> CellList::cellOf(const Vec3& x) const {
   std::array<int, 3> c{};
-  // Clamped to one cell beyond the grid before the conversion: a far query stays in int's range.
-  for (int d = 0; d < 3; ++d)
-    c[d] = static_cast<int>(std::clamp(std::floor(x[d] / cell_) - base_[d], -1.0, static_cast<double>(dims_[d])));
+  // Clamped to one cell beyond the grid before the conversion: a far query stays in int's range,
+  // and a NaN (which no clamp changes, and whose conversion is undefined) is below the grid.
+  for (int d = 0; d < 3; ++d) {
+    const double cell = std::floor(x[d] / cell_) - base_[d];
+    c[d] = std::isnan(cell) ? -1 : static_cast<int>(std::clamp(cell, -1.0, static_cast<double>(dims_[d])));
+  }
   return c;
 }
 

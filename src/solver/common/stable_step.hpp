@@ -38,7 +38,9 @@ double stableStep(const PointStore& points, std::span<const double> volume_rate,
     if (volume_rate[p] != 0.0) dt = std::min(dt, 1.0 / (3.0 * std::abs(volume_rate[p])));
   }
   dt = share.min(std::min(dt, bound));
-  KESSLER_VERIFY(std::isfinite(dt) && dt > 0.0,
+  // Nothing bounded the step if dt is still infinite, or the largest double: an OpenMP min
+  // reduction starts each thread's copy there, not at infinity, under LLVM's libomp.
+  KESSLER_VERIFY(std::isfinite(dt) && dt > 0.0 && dt < std::numeric_limits<double>::max(),
                  "no stable time step: every point is debris or at rest without a sound speed, or the model is empty");
   return cfl * dt;
 }

@@ -481,8 +481,8 @@ double Integrator::stableStep() const {
     if (volume_rate_[p] != 0.0) dt = std::min(dt, 1.0 / (3.0 * std::abs(volume_rate_[p])));
   }
   dt = own.min(dt);
-  KESSLER_VERIFY(
-      std::isfinite(dt) && dt > 0.0,
+  KESSLER_VERIFY(  // (the largest double: nothing bounded it, solver/common/stable_step.hpp)
+      std::isfinite(dt) && dt > 0.0 && dt < std::numeric_limits<double>::max(),
       "no stable time step: every particle is debris or at rest without a sound speed, or the model is empty");
   return settings_.solver.cfl * dt;
 }

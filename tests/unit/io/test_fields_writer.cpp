@@ -278,11 +278,11 @@ TEST_F(FieldWriterTest, XdmfListsEveryOutputWithMatchingDatasets) {
   writeTwo();
   checkXdmf(dir_ / "run" / "points.xdmf", {0.0, 2.5e-6}, 5);
   checkXdmf(dir_ / "run" / "nodes.xdmf", {0.0, 2.5e-6}, 4);
-  // 2 grids x (geometry + 12 attributes) for points, 2 x (geometry + 4) for nodes.
+  // 2 grids x (vertex cells + geometry + 12 attributes) for points.
   const std::string points = slurp(dir_ / "run" / "points.xdmf");
   std::size_t items = 0;
   for (auto at = points.find("<DataItem "); at != std::string::npos; at = points.find("<DataItem ", at + 1)) ++items;
-  EXPECT_EQ(items, 26u);
+  EXPECT_EQ(items, 28u);
   for (const char* name : {"velocity", "density", "pressure", "von_mises", "plastic_strain", "temperature", "eroded",
                            "loose", "carrier", "body", "id", "volume"})
     EXPECT_NE(points.find(std::string("<Attribute Name=\"") + name + "\""), std::string::npos) << name;
