@@ -2,6 +2,8 @@
 
 #include "core/error.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -46,6 +48,13 @@ ShieldComparison compareShield(const ParticleState& model, const ImpactGeometry&
   c.simulated = simulated.classification;
   const PlateSpec& first = geometry.plates.front();
   const PlateSpec& last = geometry.plates.back();
+  // The equations are fits for aluminium walls, and the wall's properties default to Al 6061-T6's.
+  const double wall_density = density(model, last.body);
+  if (wall.defaults && std::abs(wall_density - 2700.0) > 0.1 * 2700.0)
+    c.caveat = fmt::format(
+        "the rear wall's properties are Al 6061-T6's defaults, its material's density is {:.0f} kg/m^3: give "
+        "analysis.rear_wall (yield stress, Brinell hardness, sound speed) for this material",
+        wall_density);
   if (geometry.plates.size() >= 2) {
     c.model = "christiansen_whipple";
     c.spacing = first.normal.dot(last.normal) * last.frontFace() - first.rear_face;

@@ -24,6 +24,7 @@ struct WallProperties {
   double yield_stress = 275.8e6;  // Pa
   double brinell_hardness = 95.0;
   double sound_speed = 5052.0;  // m/s
+  bool defaults = true;         // these are the Al 6061-T6 values, not the deck's own
 };
 
 struct ShieldComparison {
@@ -36,6 +37,9 @@ struct ShieldComparison {
   double penetration_depth = 0.0;  // m (Cour-Palais)
   bool predicts_perforation = false;
   std::string simulated;  // the rear-wall classification of the run
+  // Why the equation may not describe this wall: its properties are Al 6061-T6's defaults but its
+  // material is not aluminium-like (density more than 10% from 2700 kg/m^3). Empty otherwise.
+  std::string caveat;
 };
 
 struct Report {

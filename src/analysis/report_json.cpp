@@ -124,7 +124,8 @@ json shieldJson(const ShieldComparison& s) {
           {"penetration_depth_m", s.penetration_depth},
           {"regime", s.regime},
           {"predicts_perforation", s.predicts_perforation},
-          {"simulated", s.simulated}};
+          {"simulated", s.simulated},
+          {"caveat", s.caveat}};
 }
 
 }  // namespace

@@ -77,6 +77,7 @@ std::string formatReport(const Report& r) {
                           whipple ? "Christiansen BLE" : "Cour-Palais single wall", s.critical_diameter * mm, s.regime,
                           s.projectile.diameter * mm, s.predicts_perforation ? "perforation" : "no perforation",
                           s.simulated));
+    if (!s.caveat.empty()) line(out, fmt::format("  {:<20} caveat: {}", "", s.caveat));
   }
   const FragmentSet& f = r.fragments;
   double eroded = 0.0;

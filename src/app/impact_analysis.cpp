@@ -69,7 +69,8 @@ nlohmann::json analyseImpact(const io::RunConfig& config, const ParticleState& m
     const analysis::ImpactGeometry geometry = impactGeometry(config, model);
     const analysis::WallProperties wall{.yield_stress = config.analysis.wall_yield_stress,
                                         .brinell_hardness = config.analysis.wall_brinell_hardness,
-                                        .sound_speed = config.analysis.wall_sound_speed};
+                                        .sound_speed = config.analysis.wall_sound_speed,
+                                        .defaults = !config.analysis.wall_given};
     const analysis::Report report = analysis::analyse(model, geometry, model.adjacency_length0, wall);
     analysis::writeFragmentFiles(dir, report);
     nlohmann::json j = analysis::toJson(report);

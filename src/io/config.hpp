@@ -58,6 +58,7 @@ struct AnalysisConfig {
   double wall_yield_stress = 275.8e6;  // Pa
   double wall_brinell_hardness = 95.0;
   double wall_sound_speed = 5052.0;  // m/s
+  bool wall_given = false;           // the deck gave analysis.rear_wall (else the defaults above)
 };
 
 struct RunConfig {

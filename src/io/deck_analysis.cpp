@@ -118,6 +118,7 @@ void checkPlates(const AnalysisConfig& a, const std::vector<BodyConfig>& bodies,
 
 void parseRearWall(const Field& field, AnalysisConfig& a) {
   MapField map = field.map({"yield_stress", "brinell_hardness", "sound_speed"});
+  a.wall_given = true;
   if (std::optional<Field> f = map.find("yield_stress")) a.wall_yield_stress = f->positive(units::pressure);
   if (std::optional<Field> f = map.find("brinell_hardness"))
     a.wall_brinell_hardness = f->positive(units::dimensionless);

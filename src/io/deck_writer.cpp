@@ -154,11 +154,14 @@ void analysis(YAML::Emitter& out, const RunConfig& config) {
   }
   scalar(out, "link_stretch", a.link_stretch, "");
   out << YAML::Key << "plots" << YAML::Value << (a.plots ? "true" : "false");
-  out << YAML::Key << "rear_wall" << YAML::Value << YAML::BeginMap;
-  scalar(out, "yield_stress", a.wall_yield_stress, "Pa");
-  scalar(out, "brinell_hardness", a.wall_brinell_hardness, "");
-  scalar(out, "sound_speed", a.wall_sound_speed, "m/s");
-  out << YAML::EndMap;
+  // Only when the deck gave it: left out, the analysis knows the values are its Al 6061-T6 defaults.
+  if (a.wall_given) {
+    out << YAML::Key << "rear_wall" << YAML::Value << YAML::BeginMap;
+    scalar(out, "yield_stress", a.wall_yield_stress, "Pa");
+    scalar(out, "brinell_hardness", a.wall_brinell_hardness, "");
+    scalar(out, "sound_speed", a.wall_sound_speed, "m/s");
+    out << YAML::EndMap;
+  }
   out << YAML::EndMap;
 }
 

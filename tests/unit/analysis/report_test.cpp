@@ -1,5 +1,6 @@
 // The whole analysis on a small Whipple-like model: report, summary JSON, text and CSV files.
 #include "analysis/report.hpp"
+#include "material/neo_hookean.hpp"
 #include "synthetic.hpp"
 
 #include <fmt/format.h>
@@ -102,6 +103,29 @@ TEST(Report, NothingBrokeReportsNoDebris) {
   Whipple chipped = whipple(false);
   ASSERT_GT(testing::erodeWhere(chipped.model, 0, [](const Vec3& x) { return x.head<2>().norm() < 0.4 * mm; }), 0);
   EXPECT_TRUE(analyse(chipped.model, chipped.geometry, chipped.lengths).debris);
+}
+
+// The ballistic-limit equations are fits for aluminium walls: with the default (Al 6061-T6) wall
+// properties and a wall of another density the comparison says so; given properties, or an
+// aluminium wall, it does not.
+TEST(Report, ADefaultAluminiumWallOnASteelPlateIsACaveat) {
+  const Whipple w = whipple();
+  EXPECT_TRUE(analyse(w.model, w.geometry, w.lengths).shield->caveat.empty());  // aluminium
+  Whipple steel = whipple();
+  NeoHookeanParameters p;
+  p.density = 7800.0;
+  p.youngs_modulus = 200e9;
+  p.poisson_ratio = 0.29;
+  steel.model.materials.push_back(std::make_shared<NeoHookean>("steel", p));
+  steel.model.bodies[1].material = static_cast<int>(steel.model.materials.size()) - 1;
+  const Report report = analyse(steel.model, steel.geometry, steel.lengths);
+  ASSERT_TRUE(report.shield.has_value());
+  EXPECT_NE(report.shield->caveat.find("7800 kg/m^3"), std::string::npos) << report.shield->caveat;
+  EXPECT_NE(formatReport(report).find("caveat: the rear wall's properties are Al 6061-T6's defaults"),
+            std::string::npos);
+  EXPECT_EQ(toJson(report).at("ballistic_limit").at("caveat"), report.shield->caveat);
+  const Report given = analyse(steel.model, steel.geometry, steel.lengths, WallProperties{.defaults = false});
+  EXPECT_TRUE(given.shield->caveat.empty());
 }
 
 TEST(Report, FragmentFilesHaveUnitsAndOneRowPerFragment) {

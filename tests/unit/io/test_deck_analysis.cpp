@@ -87,6 +87,8 @@ TEST(DeckAnalysis, TheDeckOverridesTheInferredChoices) {
   EXPECT_FALSE(c.analysis.plots);
   EXPECT_DOUBLE_EQ(c.analysis.link_stretch, 3.0);
   EXPECT_DOUBLE_EQ(c.analysis.wall_yield_stress, 300e6);
+  EXPECT_TRUE(c.analysis.wall_given);
+  EXPECT_TRUE(parseDeckString(resolvedDeckText(c), "resolved.yaml").analysis.wall_given);
 }
 
 TEST(DeckAnalysis, TheResolvedDeckReadsBackTheSame) {
@@ -97,6 +99,9 @@ TEST(DeckAnalysis, TheResolvedDeckReadsBackTheSame) {
   EXPECT_EQ(again.analysis.cloud_reference, 1);
   EXPECT_EQ(again.analysis.shot_direction, c.analysis.shot_direction);
   EXPECT_EQ(again.analysis.plots, c.analysis.plots);
+  // The wall's properties were not given: the read-back deck still has the defaults, as not given.
+  EXPECT_FALSE(c.analysis.wall_given);
+  EXPECT_FALSE(again.analysis.wall_given);
   EXPECT_EQ(std::get<geometry::Sphere>(again.bodies[1].mesh.shape).radius,
             std::get<geometry::Sphere>(c.bodies[1].mesh.shape).radius);
   EXPECT_EQ(again.materials[0].impact.fracture_energy, 100e3);
