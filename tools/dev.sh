@@ -81,7 +81,11 @@ asan() {
   configure_asan
   # Only what the unit tests, the impact run and the fuzzers need: not the benches.
   cmake --build build-asan -j"$(nproc)" --target unit_tests fuzz_deck fuzz_sesame
-  OMP_WAIT_POLICY=passive ctest --test-dir build-asan -L unit -j"$(nproc)" --output-on-failure
+  # VolumeStabilisation.ConservesMomentumAndBooksItsEnergy (three impacts at cfl 0.1) takes 197 s here,
+  # against 65 s in g++'s ASan build and 1 s in the release build that `test` runs: its code paths
+  # are the other volume tests', so it is left to `test`.
+  OMP_WAIT_POLICY=passive ctest --test-dir build-asan -L unit -j"$(nproc)" --output-on-failure \
+    -E '^VolumeStabilisation\.ConservesMomentumAndBooksItsEnergy$'
   build-asan/src/app/kessler run tests/data/decks/elastic-sphere-plate.yaml --out build-asan/example-1us \
     --set solver.end_time="1 us" --set output.every="0.5 us" --quiet
   echo "asan: unit tests and a 1 us impact ran clean"
