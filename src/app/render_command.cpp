@@ -44,7 +44,11 @@ void render(const RenderArguments& args) {
       throw InputError(
           "kessler render: no display (DISPLAY is not set) and no xvfb-run to make one (Debian: apt-get install "
           "xvfb xauth)");
-    prefix = "xvfb-run -a ";
+    // A 24-bit screen (the default is 8-bit); Xvfb's own messages go to its log.
+    std::error_code error;
+    fs::create_directories(args.out.empty() ? fs::path(args.run) / "pictures" : fs::path(args.out), error);
+    const fs::path xvfb_log = (args.out.empty() ? fs::path(args.run) / "pictures" : fs::path(args.out)) / "xvfb.log";
+    prefix = fmt::format("xvfb-run -a -e {} -s '-screen 0 1920x1200x24' ", shellQuoted(xvfb_log.string()));
   }
   std::string command = fmt::format("{}{} {} render {} --color {} --size {} {}", prefix, shellQuoted(pvbatch->string()),
                                     shellQuoted((plotsDir() / "paraview_view.py").string()), shellQuoted(args.run),
@@ -55,7 +59,16 @@ void render(const RenderArguments& args) {
   }
   if (args.every > 0) command += fmt::format(" --every {}", args.every);
   if (!args.out.empty()) command += " --out " + shellQuoted(args.out);
-  const int status = std::system(command.c_str());
+  int status = std::system(command.c_str());
+  // Under load, xvfb-run has been seen to hand pvbatch a display it could not reach (1 run in a
+  // full parallel test suite; "bad X server connection", an abort): a second try gets a fresh
+  // server. Exit status 1 is the script's own refusal (a field the run does not have): not retried.
+  const bool refused = WIFEXITED(status) && WEXITSTATUS(status) == 1;
+  if (status != 0 && !refused && !prefix.empty()) {
+    log::info("kessler render: pvbatch failed under xvfb-run (exit status {}); trying once more",
+              WIFEXITED(status) ? WEXITSTATUS(status) : status);
+    status = std::system(command.c_str());
+  }
   if (status != 0) {
     log::info("kessler render: pvbatch failed (exit status {})", WIFEXITED(status) ? WEXITSTATUS(status) : status);
     setExitCode(1);
