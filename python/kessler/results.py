@@ -89,8 +89,8 @@ def _table(path):
 class Results:
     """A run folder: Results("results/sphere-plate") or what kessler.run returns.
 
-    summary, analysis    summary.json and its "analysis" object, as dicts
-    status               "completed", "interrupted", "stopped" or "failed"
+    summary, analysis    summary.json and its "analysis" object, as dicts ({} while the run goes on)
+    status               "completed", "interrupted", "stopped" or "failed"; None while it goes on
     times                the output times (s) of the point fields
     points(i), nodes(i)  the fields at output i (negative counts from the end), as a Frame
     history              history.csv (step, time, energies, momentum) as a structured array
@@ -110,7 +110,11 @@ class Results:
 
     @property
     def summary(self):
-        with open(self._path("summary.json")) as f:
+        """summary.json as a dict; {} for a run still going (it writes the summary at its end)."""
+        path = self._path("summary.json")
+        if not os.path.exists(path):
+            return {}
+        with open(path) as f:
             return json.load(f)
 
     @property

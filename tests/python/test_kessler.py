@@ -111,6 +111,10 @@ def test_an_exception_in_the_callback_stops_the_run_cleanly(tmp_path):
     # Nothing lost: the state it reached is in the checkpoint, which continues it.
     r = kessler.Results(out)
     assert r.status == "interrupted" and os.path.exists(out / "checkpoint.h5")
+    # A run still going has written no summary yet: its outputs are readable, its status None.
+    os.rename(out / "summary.json", out / "summary.saved")
+    assert r.status is None and r.analysis == {} and len(r.times) >= 1
+    os.rename(out / "summary.saved", out / "summary.json")
     assert kessler.restart(out, quiet=True, progress=False).status == "completed"
 
 
