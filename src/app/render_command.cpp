@@ -45,10 +45,11 @@ void render(const RenderArguments& args) {
           "kessler render: no display (DISPLAY is not set) and no xvfb-run to make one (Debian: apt-get install "
           "xvfb xauth)");
     // A 24-bit screen (the default is 8-bit); Xvfb's own messages go to its log.
+    const fs::path pictures = args.out.empty() ? fs::path(args.run) / "pictures" : fs::path(args.out);
     std::error_code error;
-    fs::create_directories(args.out.empty() ? fs::path(args.run) / "pictures" : fs::path(args.out), error);
-    const fs::path xvfb_log = (args.out.empty() ? fs::path(args.run) / "pictures" : fs::path(args.out)) / "xvfb.log";
-    prefix = fmt::format("xvfb-run -a -e {} -s '-screen 0 1920x1200x24' ", shellQuoted(xvfb_log.string()));
+    fs::create_directories(pictures, error);
+    prefix =
+        fmt::format("xvfb-run -a -e {} -s '-screen 0 1920x1200x24' ", shellQuoted((pictures / "xvfb.log").string()));
   }
   std::string command = fmt::format("{}{} {} render {} --color {} --size {} {}", prefix, shellQuoted(pvbatch->string()),
                                     shellQuoted((plotsDir() / "paraview_view.py").string()), shellQuoted(args.run),
