@@ -21,11 +21,6 @@ namespace fs = std::filesystem;
 
 constexpr const char* system_python = "/usr/bin/python3";
 
-void warn(const std::string& message) {
-  fmt::print(stderr, "kessler: warning: {}\n", message);
-  std::fflush(stderr);
-}
-
 // Where the projectile starts: the centre of its shape's bounding box.
 Vec3 startOf(const io::BodyConfig& body) {
   const geometry::BoundingBox box = geometry::bounds(body.mesh.shape);

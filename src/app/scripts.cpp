@@ -12,6 +12,11 @@ namespace kessler::app {
 
 namespace fs = std::filesystem;
 
+void warn(const std::string& message) {
+  fmt::print(stderr, "kessler: warning: {}\n", message);
+  std::fflush(stderr);
+}
+
 fs::path plotsDir() {
   if (const char* env = std::getenv("KESSLER_PLOTS_DIR"); env != nullptr && *env != '\0') return env;
   return KESSLER_SOURCE_PLOTS_DIR;
@@ -50,8 +55,7 @@ void writeParaViewState(const fs::path& dir) {
                                           shellQuoted((plotsDir() / "paraview_view.py").string()),
                                           shellQuoted(dir.string()), shellQuoted(log_file.string()));
   if (std::system(command.c_str()) != 0) {
-    fmt::print(stderr, "kessler: warning: the ParaView state was not written (see {})\n", log_file.string());
-    std::fflush(stderr);
+    warn(fmt::format("the ParaView state was not written (see {})", log_file.string()));
     return;
   }
   log::info("ParaView: File > Load State > {}", (dir / "kessler.pvsm").string());

@@ -7,6 +7,9 @@
 
 namespace kessler::app {
 
+// "kessler: warning: MESSAGE" on stderr: what the end of a run could not do, which never fails it.
+void warn(const std::string& message);
+
 // The tools/plots folder: $KESSLER_PLOTS_DIR, else the source tree's.
 std::filesystem::path plotsDir();
 
