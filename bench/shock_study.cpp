@@ -4,9 +4,11 @@
 // `--profile`, the target's slab profile at the end. Options first: `--two-bodies` (a flyer onto a target
 // instead of one slab whose halves meet), `--no-volume-averaging`,
 // `--stabilisation A` (OtmOptions::volume_stabilisation), `--relaxation K` (OtmOptions::volume_relaxation),
-// `--contact-distance D`, `--cfl X`, `--noh-end T` (the Noh problem's end time, 0.6 by default; the
+// `--contact-distance D`, `--cfl X`, `--method otm|sph|rkpm`, `--lateral-lock` (every point
+// held laterally, not only the rollers), `--noh-end T` (the Noh problem's end time, 0.6 by default; the
 // shock is then at T/3). Not a test.
 #include "core/error.hpp"
+#include "verify/fixtures.hpp"
 #include "verify/impact_problems.hpp"
 
 #include <fmt/format.h>
@@ -17,7 +19,7 @@
 
 int main(int argc, char** argv) {
   kessler::MethodSettings settings;
-  bool profile = false, one_body = true, noh = false;
+  bool profile = false, one_body = true, noh = false, lateral_lock = false;
   double noh_end = 0.6;
   int first = 1;
   for (; first < argc; ++first) {
@@ -28,6 +30,10 @@ int main(int argc, char** argv) {
       noh = true;
     } else if (option == "--noh-end" && first + 1 < argc) {
       noh_end = std::atof(argv[++first]);
+    } else if (option == "--method" && first + 1 < argc) {
+      kessler::verify::useMethod(argv[++first]);
+    } else if (option == "--lateral-lock") {
+      lateral_lock = true;
     } else if (option == "--two-bodies") {
       one_body = false;
     } else if (option == "--no-volume-averaging") {
@@ -67,7 +73,7 @@ int main(int argc, char** argv) {
     const double mesh = std::atof(argv[i]) * 1e-3;
     kessler::verify::Hugoniot3dResult r;
     try {
-      r = kessler::verify::runHugoniot3d(mesh, settings, one_body);
+      r = kessler::verify::runHugoniot3d(mesh, settings, one_body, lateral_lock);
     } catch (const kessler::NumericalError& e) {
       fmt::print("{:.3f} mm stopped: {}\n", 1e3 * mesh, e.what());
       continue;

@@ -105,7 +105,7 @@ Plateau measure(const Method& method, const std::vector<double>& z0_by_id, doubl
 
 }  // namespace
 
-Hugoniot3dResult runHugoniot3d(double mesh_size, MethodSettings settings, bool one_body) {
+Hugoniot3dResult runHugoniot3d(double mesh_size, MethodSettings settings, bool one_body, bool lateral_lock) {
   const library::Entry& al = library::find("Al6061-T6");
   // As flyer-plate: no damage model, eigenerosion with the library's G_c and Bao & Wierzbicki's
   // cut-off, so that the shock itself fails no point.
@@ -135,10 +135,13 @@ Hugoniot3dResult runHugoniot3d(double mesh_size, MethodSettings settings, bool o
         BodySetup{.name = "flyer", .material = material, .mesh = slab(-length - gap, -gap), .velocity = Vec3(0, 0, v)},
         BodySetup{.name = "target", .material = material, .mesh = slab(0.0, length)}};
   }
-  // Rollers on the four lateral faces: uniaxial strain.
+  // Rollers on the four lateral faces: uniaxial strain. (Or every point held laterally.)
   for (int axis = 0; axis < 2; ++axis)
-    for (double offset : {0.0, width})
-      problem.planes.push_back({.axis = axis, .offset = offset, .tolerance = 1e-6 * h});
+    if (lateral_lock)
+      problem.planes.push_back(lockAxis(axis));
+    else
+      for (double offset : {0.0, width})
+        problem.planes.push_back({.axis = axis, .offset = offset, .tolerance = 1e-6 * h});
 
   Hugoniot3dResult r;
   r.reference_velocity = 0.5 * v;

@@ -83,7 +83,10 @@ Outcome noh3d();
 // mesh_size: the Gmsh target edge length, m; settings: the solver's (end_time is set here);
 // one_body: one slab whose halves meet at the impact speed (no contact between bodies) instead of a
 // flyer striking a target.
-Hugoniot3dResult runHugoniot3d(double mesh_size, MethodSettings settings = {}, bool one_body = true);
+// lateral_lock: every point keeps a zero lateral velocity, not only those on the rollers (a study:
+// the exact solution's lateral velocity is zero everywhere).
+Hugoniot3dResult runHugoniot3d(double mesh_size, MethodSettings settings = {}, bool one_body = true,
+                               bool lateral_lock = false);
 Outcome hugoniot3d();
 
 struct TaylorBarResult {

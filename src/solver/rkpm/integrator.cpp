@@ -68,10 +68,11 @@ void Integrator::prepare() {
   for (std::size_t p = 0; p < n; ++p) support[p] = settings_.rkpm.support * points.spacing0[p];
   std::vector<std::string> names;
   for (const BodyInfo& b : model_.bodies) names.push_back(b.name);
+  const SurfaceHolds holds = surfaceHolds(model_);
   {
     ScopedPhase phase(timers_, "kernels");
     kernels_ = buildKernels({model_.reference, points.body, support, points.volume0, model_.cell_volume, model_.faces,
-                             names, settings_.symmetry_axes});
+                             names, settings_.symmetry_axes, holds.faces});
     transposed_ = transpose(kernels_.gradient);
   }
   // Row-sum lumped masses: the coefficients carry the particles' momentum, sum_I m_I vhat_I =
@@ -88,7 +89,7 @@ void Integrator::prepare() {
           fmt::format("RKPM: the lumped mass of particle {} of body '{}' is {:.3g} kg, not positive: its "
                       "kernel's negative values outweigh the positive (docs/theory.md §12)",
                       points.id[i], model_.bodies[static_cast<std::size_t>(points.body[i])].name, mass_[i]));
-  collocation_ = VelocityCollocation(psi, model_.constrained);
+  collocation_ = VelocityCollocation(psi, model_.constrained, mass_, kernels_.at_faces, holds.held);
   acceleration_.assign(n, Vec3::Zero());
   volume_rate_.assign(n, 0.0);
   piola_.assign(n, Mat3::Zero());

@@ -199,6 +199,17 @@ Kernels buildKernels(const KernelInput& in) {
     }
   }
   k.gradient = flatten(gradients);
+  std::vector<Row<double>> kept(in.kept_faces.size());
+  for (std::size_t r = 0; r < kept.size(); ++r) {
+    const auto f = static_cast<std::size_t>(in.kept_faces[r]);
+    for (LocalIndex e = at_faces.offset[f]; e < at_faces.offset[f + 1]; ++e) {
+      const auto slot = static_cast<std::size_t>(e);
+      kept[r].column.push_back(at_faces.column[slot]);
+      kept[r].mirror.push_back(at_faces.mirror[slot]);
+      kept[r].value.push_back(at_faces.value[slot]);
+    }
+  }
+  k.at_faces = flatten(kept);
   return k;
 }
 

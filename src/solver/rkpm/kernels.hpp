@@ -42,19 +42,21 @@ struct Table {
 };
 
 struct Kernels {
-  Table<double> psi;     // row K: Psi_I(X_K)
-  Table<Vec3> gradient;  // row J: grad~ Psi_I(X_J)
+  Table<double> psi;       // row K: Psi_I(X_K)
+  Table<Vec3> gradient;    // row J: grad~ Psi_I(X_J)
+  Table<double> at_faces;  // row r: Psi_I at the centroid of face kept_faces[r]
 };
 
 struct KernelInput {
-  std::span<const Vec3> reference;      // X_I
-  std::span<const int> body;            // a particle's kernel reaches only its own body's particles
-  std::span<const double> support;      // a_I, m
-  std::span<const double> volume;       // V_I (the quadrature weights of M), m^3
-  std::span<const double> cell_volume;  // the volume of each particle's cell, m^3
-  std::span<const CellFace> faces;      // every cell's faces, each once
-  std::span<const std::string> bodies;  // the bodies' names, for errors
-  std::span<const int> symmetry_axes;   // the axes normal to the problem's symmetry planes
+  std::span<const Vec3> reference;              // X_I
+  std::span<const int> body;                    // a particle's kernel reaches only its own body's particles
+  std::span<const double> support;              // a_I, m
+  std::span<const double> volume;               // V_I (the quadrature weights of M), m^3
+  std::span<const double> cell_volume;          // the volume of each particle's cell, m^3
+  std::span<const CellFace> faces;              // every cell's faces, each once
+  std::span<const std::string> bodies;          // the bodies' names, for errors
+  std::span<const int> symmetry_axes;           // the axes normal to the problem's symmetry planes
+  std::span<const LocalIndex> kept_faces = {};  // faces whose values Kernels::at_faces keeps
 };
 
 // Throws kessler::Error naming the body and the position where a moment matrix is singular.

@@ -13,9 +13,13 @@
 
 namespace kessler::rkpm {
 
+inline constexpr std::uint8_t held_at_surface = 8;
+
 struct Model : ParticleState {
   // Per particle: bit a set if velocity component a is prescribed, to prescribed_v[a] (fixed faces,
-  // the deck's and the verification problems' planes), imposed by velocity collocation.
+  // the deck's and the verification problems' planes), imposed by velocity collocation. Bit 3 + a
+  // (held_at_surface << a) as well: a plane holds component a on the particle's cell faces that lie
+  // on the body's surface normal to a, not at the particle (VelocityCollocation).
   std::vector<std::uint8_t> constrained;
   std::vector<Vec3> prescribed_v;
   std::vector<Vec3> reference;      // X_I: the kernels' centres, where the particles started

@@ -1,6 +1,7 @@
 #include "solver/rkpm/rkpm_method.hpp"
 
 #include "solver/common/particle_bodies.hpp"
+#include "solver/rkpm/setup.hpp"
 
 #include <fmt/format.h>
 
@@ -17,7 +18,7 @@ RkpmMethod::RkpmMethod(Model model, const Problem& problem) : RkpmMethod(std::mo
   for (const PlaneConstraint& plane : problem.planes) {
     if (!plane.history) continue;
     std::vector<Index> ids;
-    for (const LocalIndex p : particlesOnPlane(model_.points, plane)) ids.push_back(model_.points.id[p]);
+    for (const LocalIndex p : particlesOnPlane(model_, plane)) ids.push_back(model_.points.id[p]);
     histories_.add(plane, std::move(ids));
   }
   histories_.locate(model_.points.id, false);  // RKPM keeps its particles in place

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <map>
 
 namespace kessler::rkpm {
@@ -99,8 +100,10 @@ Model buildModel(const Problem& problem) {
         "  RKPM's bodies meet through the sliding contact, without friction (it has no seizing contact; "
         "solver.contact: {{ type: sliding, friction: mu }} sets a friction)");
   for (const PlaneConstraint& plane : problem.planes)
-    for (const LocalIndex p : particlesOnPlane(points, plane)) {
+    for (const LocalIndex p : particlesOnPlane(model, plane)) {
       model.constrained[p] |= static_cast<std::uint8_t>(1u << plane.axis);
+      if (!std::isinf(plane.tolerance))
+        model.constrained[p] |= static_cast<std::uint8_t>(held_at_surface << plane.axis);
       model.prescribed_v[p][plane.axis] = plane.velocity;
     }
   model.reference = points.x;
@@ -108,6 +111,24 @@ Model buildModel(const Problem& problem) {
   model.coefficient_v = points.v;
   if (problem.prepare) problem.prepare(model);
   return model;
+}
+
+std::vector<LocalIndex> particlesOnPlane(const Model& model, const PlaneConstraint& plane) {
+  const PointStore& points = model.points;
+  if (std::isinf(plane.tolerance)) return kessler::particlesOnPlane(points, plane);
+  std::vector<std::uint8_t> held(static_cast<std::size_t>(points.size()), 0);
+  for (const CellFace& f : model.faces) {
+    const double area = f.area.norm();
+    if (f.outer >= 0 || !(area > 0.0) || (plane.body >= 0 && points.body[f.inner] != plane.body)) continue;
+    // In the plane: its centroid on it, and its normal along the axis (to round-off).
+    const bool normal = std::abs(f.area[plane.axis]) >= (1.0 - 1e-9) * area;
+    if (normal && std::abs(f.centroid[plane.axis] - plane.offset) <= plane.tolerance + 1e-9 * std::sqrt(area))
+      held[static_cast<std::size_t>(f.inner)] = 1;
+  }
+  std::vector<LocalIndex> on;
+  for (LocalIndex p = 0; p < points.size(); ++p)
+    if (held[static_cast<std::size_t>(p)]) on.push_back(p);
+  return on;
 }
 
 }  // namespace kessler::rkpm

@@ -189,7 +189,16 @@ TEST(Rkpm, VelocityCollocationHoldsThePrescribedVelocity) {
   std::uniform_real_distribution<double> speed(-100.0, 100.0);
   std::vector<Vec3> v(static_cast<std::size_t>(n));
   for (Vec3& c : v) c = Vec3(speed(random), speed(random), speed(random));
-  const VelocityCollocation collocation(k.psi, constrained);
+  std::uniform_real_distribution<double> spread(0.5, 1.5);
+  std::vector<double> mass(static_cast<std::size_t>(n));
+  for (double& m : mass) m = 1e-6 * spread(random);
+  auto kinetic = [&](const std::vector<Vec3>& u) {
+    double e = 0.0;
+    for (std::size_t i = 0; i < u.size(); ++i) e += 0.5 * mass[i] * u[i].squaredNorm();
+    return e;
+  };
+  const VelocityCollocation collocation(k.psi, constrained, mass);
+  const std::vector<Vec3> before = v;
   collocation.impose(prescribed, v);
   std::vector<Vec3> at(static_cast<std::size_t>(n));
   interpolate(k.psi, v, at);
@@ -198,6 +207,70 @@ TEST(Rkpm, VelocityCollocationHoldsThePrescribedVelocity) {
     for (int a = 0; a < 3; ++a)
       if (constrained[p] & (1u << a)) worst = std::max(worst, std::abs(at[p][a] - prescribed[p][a]));
   EXPECT_LT(worst, 1e-12 * 100.0);  // relative to the speeds
+
+  // A still boundary takes kinetic energy and never gives it: the coefficients are the nearest in the
+  // masses' metric to those before that meet it, so the energy falls by exactly that of the change.
+  for (Vec3& g : prescribed) g.setZero();
+  v = before;
+  collocation.impose(prescribed, v);
+  double change = 0.0;
+  for (std::size_t i = 0; i < v.size(); ++i) change += 0.5 * mass[i] * (v[i] - before[i]).squaredNorm();
+  EXPECT_GT(change, 0.0);
+  EXPECT_NEAR(kinetic(before) - kinetic(v), change, 1e-9 * kinetic(before));
+}
+
+// A plane holds the velocity on the body's surface faces in it, where the cells' smoothed gradients
+// read it, not at particles inside: on tet cells, only the particles whose tetrahedra have a face in
+// the plane are held, and after collocation the velocity at those faces' centroids is the plane's.
+TEST(Rkpm, PlanesHoldTheVelocityOnTheSurfaceFaces) {
+  BodySetup body;
+  body.mesh =
+      geometry::discretise(geometry::structuredBoxMesh(geometry::Box{Vec3::Zero(), Vec3(4e-3, 3e-3, 3e-3)}, {4, 3, 3}));
+  Problem problem = block(body);
+  const double tol = 1e-9 * h;
+  problem.planes = {{.axis = 0, .offset = 0.0, .tolerance = tol, .velocity = 0.0},
+                    {.axis = 0, .offset = 4e-3, .tolerance = tol, .velocity = 2.0}};
+  const Model model = buildModel(problem);
+  const SurfaceHolds holds = surfaceHolds(model);
+  ASSERT_FALSE(holds.faces.empty());
+  for (std::size_t r = 0; r < holds.faces.size(); ++r) {
+    const CellFace& f = model.faces[static_cast<std::size_t>(holds.faces[r])];
+    EXPECT_EQ(holds.held[r].axis, 0);
+    EXPECT_LT(std::min(std::abs(f.centroid.x()), std::abs(f.centroid.x() - 4e-3)), tol);
+  }
+  // Every held particle has a cell face in a plane; a barycentre nearer the plane than a cell's
+  // reach but without such a face is not held.
+  long held = 0;
+  for (LocalIndex p = 0; p < model.points.size(); ++p) {
+    if (!(model.constrained[p] & held_at_surface)) continue;
+    ++held;
+    EXPECT_TRUE(model.constrained[p] & 1u);
+    bool has_face = false;
+    for (const HeldFace& f : holds.held) has_face = has_face || f.particle == p;
+    EXPECT_TRUE(has_face) << "particle " << p;
+  }
+  EXPECT_EQ(static_cast<std::size_t>(held), holds.faces.size());  // Kuhn tets: one face in a plane each
+
+  std::vector<double> support;
+  for (const double s : model.points.spacing0) support.push_back(problem.settings.rkpm.support * s);
+  const std::vector<std::string> names{"block"};
+  const Kernels k = buildKernels({model.reference, model.points.body, support, model.points.volume0, model.cell_volume,
+                                  model.faces, names, problem.symmetry_axes, holds.faces});
+  std::mt19937 random(8);
+  std::uniform_real_distribution<double> speed(-50.0, 50.0);
+  std::vector<Vec3> v(model.reference.size());
+  for (Vec3& c : v) c = Vec3(speed(random), speed(random), speed(random));
+  std::vector<double> mass(v.size(), 1e-6);
+  const VelocityCollocation collocation(k.psi, model.constrained, mass, k.at_faces, holds.held);
+  collocation.impose(model.prescribed_v, v);
+  for (std::size_t r = 0; r < holds.faces.size(); ++r) {
+    double vx = 0.0;
+    for (LocalIndex e = k.at_faces.offset[r]; e < k.at_faces.offset[r + 1]; ++e)
+      vx += k.at_faces.value[static_cast<std::size_t>(e)] *
+            v[static_cast<std::size_t>(k.at_faces.column[static_cast<std::size_t>(e)])].x();
+    const double want = model.faces[static_cast<std::size_t>(holds.faces[r])].centroid.x() > 1e-3 ? 2.0 : 0.0;
+    EXPECT_NEAR(vx, want, 1e-12 * 50.0) << "face row " << r;
+  }
 }
 
 // A rigid wall meets the particles, not the coefficients: a jittered block moving at random velocities
