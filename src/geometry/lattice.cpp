@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace kessler::geometry {
@@ -95,6 +96,91 @@ Lattice fill(const Vec3& origin, const Vec3& cell, const std::array<int, 3>& n, 
 }
 
 }  // namespace
+
+Lattice fillTetLattice(const Discretisation& tets) {
+  const std::size_t count = tets.points.size();
+  if (count == 0 || tets.faces.empty() || tets.nodes.empty())
+    throw InputError("a particle lattice fills a tet mesh, and this body has no tetrahedra");
+  // Each tet's four nodes, from its faces.
+  std::vector<std::array<LocalIndex, 4>> corner(count, {-1, -1, -1, -1});
+  auto add = [&](LocalIndex tet, LocalIndex node) {
+    auto& c = corner[static_cast<std::size_t>(tet)];
+    for (LocalIndex& slot : c) {
+      if (slot == node) return;
+      if (slot < 0) {
+        slot = node;
+        return;
+      }
+    }
+  };
+  for (const TetFace& f : tets.faces)
+    for (const LocalIndex node : f.nodes) {
+      add(f.inner, node);
+      if (f.outer >= 0) add(f.outer, node);
+    }
+  double volume = 0.0;
+  for (const double v : tets.volumes) volume += v;
+  const double size = std::cbrt(volume / static_cast<double>(count));
+  Vec3 lo = tets.nodes.front(), hi = lo;
+  for (const Vec3& x : tets.nodes) {
+    lo = lo.cwiseMin(x);
+    hi = hi.cwiseMax(x);
+  }
+  std::array<int, 3> n{};
+  for (int a = 0; a < 3; ++a) {
+    n[a] = std::max(1, static_cast<int>(std::ceil((hi[a] - lo[a]) / size - 1e-9)));
+    if (n[a] < 2)
+      throw InputError(fmt::format("the mesh is {:.4g} mm across along {}, less than two elements of {:.4g} mm",
+                                   1e3 * (hi[a] - lo[a]), "xyz"[a], 1e3 * size));
+  }
+  KESSLER_VERIFY(static_cast<double>(n[0]) * n[1] * n[2] < static_cast<double>(std::numeric_limits<LocalIndex>::max()),
+                 "a lattice of {} x {} x {} elements exceeds 32-bit indices", n[0], n[1], n[2]);
+  // The elements whose centroid lies in a tet (on a shared face: in either), visited tet by tet over
+  // the centroids within its bounding box.
+  std::vector<std::uint8_t> inside(static_cast<std::size_t>(n[0]) * n[1] * n[2], 0);
+  const auto flat = [&](const std::array<int, 3>& i) {
+    return (static_cast<std::size_t>(i[2]) * n[1] + i[1]) * n[0] + i[0];
+  };
+  for (std::size_t t = 0; t < count; ++t) {
+    const auto& c = corner[t];
+    if (c[3] < 0) throw InputError(fmt::format("tet {} of the mesh has fewer than four nodes in its faces", t));
+    const Vec3& a = tets.nodes[static_cast<std::size_t>(c[0])];
+    Mat3 edges;
+    Vec3 tlo = a, thi = a;
+    for (int k = 1; k < 4; ++k) {
+      const Vec3& x = tets.nodes[static_cast<std::size_t>(c[static_cast<std::size_t>(k)])];
+      edges.col(k - 1) = x - a;
+      tlo = tlo.cwiseMin(x);
+      thi = thi.cwiseMax(x);
+    }
+    const Mat3 inverse = edges.inverse();
+    std::array<int, 3> first{}, last{};
+    for (int d = 0; d < 3; ++d) {
+      first[d] = std::max(0, static_cast<int>(std::ceil((tlo[d] - lo[d]) / size - 0.5 - 1e-9)));
+      last[d] = std::min(n[d] - 1, static_cast<int>(std::floor((thi[d] - lo[d]) / size - 0.5 + 1e-9)));
+    }
+    std::array<int, 3> i{};
+    for (i[2] = first[2]; i[2] <= last[2]; ++i[2])
+      for (i[1] = first[1]; i[1] <= last[1]; ++i[1])
+        for (i[0] = first[0]; i[0] <= last[0]; ++i[0]) {
+          const Vec3 centroid = lo + size * (Vec3(i[0], i[1], i[2]) + Vec3::Constant(0.5));
+          const Vec3 l = inverse * (centroid - a);
+          constexpr double eps = 1e-9;
+          if (l.minCoeff() >= -eps && l.sum() <= 1.0 + eps) inside[flat(i)] = 1;
+        }
+  }
+  Lattice lattice = fill(lo, Vec3::Constant(size), n, [&](const Vec3& centroid) {
+    std::array<int, 3> i{};
+    for (int d = 0; d < 3; ++d) i[d] = static_cast<int>(std::floor((centroid[d] - lo[d]) / size));
+    return inside[flat(i)] != 0;
+  });
+  Discretisation& d = lattice.particles;
+  if (d.points.empty())
+    throw InputError(fmt::format("no element of {:.4g} mm has its centre inside the mesh", 1e3 * size));
+  const double scale = volume / (static_cast<double>(d.points.size()) * size * size * size);
+  for (double& v : d.volumes) v *= scale;
+  return lattice;
+}
 
 Lattice fillBoxLattice(const Box& box, const std::array<int, 3>& cells) {
   const Vec3 extent = box.max - box.min;

@@ -35,6 +35,14 @@ struct Lattice {
 // less than two elements: one layer of particles is not a body.
 Lattice fillLattice(const Shape& shape, double size, const std::vector<int>& symmetry_axes);
 
+// A tet mesh (a mesh file, or a verification problem's unstructured body; already clipped to its
+// symmetry planes) filled with cubes: the elements whose centroid lies in a tetrahedron, with the
+// edge the tets' particles had, the cube root of the mesh's volume per tet (so about as many
+// particles), from the corner of the nodes' bounding box. Each particle's volume is scaled so that
+// the particles hold the mesh's volume. Throws InputError for a mesh without tetrahedra's faces, or
+// whose filling is less than two elements across along an axis.
+Lattice fillTetLattice(const Discretisation& tets);
+
 // A box of exactly `cells` elements along each axis (at least two; no symmetry clipping).
 Lattice fillBoxLattice(const Box& box, const std::array<int, 3>& cells);
 

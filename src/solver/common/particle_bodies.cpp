@@ -52,6 +52,16 @@ BodyParticles particlesOf(const BodySetup& setup, const std::vector<int>& symmet
   }
 }
 
+BodyParticles latticeParticlesOf(const BodySetup& setup, const std::vector<int>& symmetry_axes, const char* method) {
+  BodyParticles made = particlesOf(setup, symmetry_axes, method);
+  if (made.frame.cell.squaredNorm() > 0.0 || made.particles.faces.empty()) return made;
+  try {
+    return fromLattice(geometry::fillTetLattice(made.particles));
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("body '{}': {}", setup.name, e.what()));
+  }
+}
+
 LocalIndex addParticleBody(ParticleState& state, const BodySetup& setup, const BodyParticles& made) {
   KESSLER_VERIFY(setup.material != nullptr, "body '{}' has no material", setup.name);
   const geometry::Discretisation& particles = made.particles;

@@ -4,7 +4,8 @@
 // at each centroid (geometry/lattice.hpp): the particle spacing is the deck's mesh_size; a structured
 // box, one particle per cell. A body given as a tet mesh (a mesh file, a verification problem's
 // unstructured slab) takes one particle per tet, at its barycentre, as OTM's points, with the cube
-// root of its volume as its spacing.
+// root of its volume as its spacing (RKPM, whose cells are then the tets); latticeParticlesOf fills
+// it with cubes instead (SPH).
 #include "geometry/mesh.hpp"
 #include "particles/store.hpp"
 #include "solver/common/particle_state.hpp"
@@ -31,6 +32,11 @@ struct BodyParticles {
 // Throws InputError for a body that cannot be filled (thinner than two particles, say), naming it.
 // `method` names the method in the refusal of refine (a lattice has one particle size).
 BodyParticles particlesOf(const BodySetup& setup, const std::vector<int>& symmetry_axes, const char* method);
+
+// The same, with a tet mesh filled with cubes as well (geometry::fillTetLattice): every body a
+// lattice of hexahedral elements, as SPH's finite-element reconstruction needs (docs/theory.md §10).
+// A bare particle set (a Discretisation without tetrahedra) is taken as it is.
+BodyParticles latticeParticlesOf(const BodySetup& setup, const std::vector<int>& symmetry_axes, const char* method);
 
 // Appends a body's particles to `state`: its material (the one an earlier body has, if the same), the
 // particles as points (position, initial velocity, volume, mass, spacing, room temperature), their

@@ -1,6 +1,7 @@
 // The particle lattice of SPH's finite-element reconstruction (geometry/lattice.hpp).
 #include "geometry/lattice.hpp"
 #include "core/error.hpp"
+#include "geometry/structured_mesh.hpp"
 
 #include <gtest/gtest.h>
 
@@ -59,6 +60,38 @@ TEST(Lattice, StructuredBoxHasOneParticlePerCell) {
   EXPECT_NEAR(l.cell[2], 1.5e-3, 1e-15);
   EXPECT_NEAR(total(l.particles.volumes), 36e-9, 1e-20);
   EXPECT_THROW(fillBoxLattice(Box{Vec3::Zero(), Vec3(1e-3, 1e-3, 1e-3)}, {1, 2, 2}), InputError);
+}
+
+// A tet mesh filled with cubes: about one cube per tet, each centroid inside the meshed box, the
+// elements from the box's corner, the mesh's volume held; a bare particle set is refused.
+TEST(Lattice, TetMeshIsFilledWithCubesInsideIt) {
+  const Box box{Vec3(0, 0, 0), Vec3(4e-3, 3e-3, 6e-3)};
+  const Discretisation tets = discretise(structuredBoxMesh(box, {4, 3, 6}));  // 6 Kuhn tets per cell
+  const Lattice lattice = fillTetLattice(tets);
+  const Discretisation& d = lattice.particles;
+  const double size = std::cbrt(volume(box) / static_cast<double>(tets.points.size()));
+  EXPECT_NEAR(lattice.cell.x(), size, 1e-15);
+  EXPECT_EQ(lattice.origin, box.min);
+  // Every element whose centroid is inside the box, and no other: the box is convex and its tets
+  // tile it, so the count is the centroids inside.
+  long expected = 0;
+  for (int k = 0; k < lattice.count[2]; ++k)
+    for (int j = 0; j < lattice.count[1]; ++j)
+      for (int i = 0; i < lattice.count[0]; ++i) {
+        const Vec3 c = box.min + size * (Vec3(i, j, k) + Vec3::Constant(0.5));
+        expected += (c.array() <= box.max.array()).all() ? 1 : 0;
+      }
+  EXPECT_EQ(static_cast<long>(d.points.size()), expected);
+  for (const Vec3& x : d.points)
+    EXPECT_TRUE((x.array() >= box.min.array()).all() && (x.array() <= box.max.array()).all());
+  EXPECT_NEAR(total(d.volumes), volume(box), 1e-12 * volume(box));
+  EXPECT_GT(static_cast<double>(d.points.size()), 0.5 * static_cast<double>(tets.points.size()));
+  EXPECT_LT(static_cast<double>(d.points.size()), 1.5 * static_cast<double>(tets.points.size()));
+
+  Discretisation cloud;
+  cloud.points = {Vec3::Zero()};
+  cloud.volumes = {1e-9};
+  EXPECT_THROW(fillTetLattice(cloud), InputError);
 }
 
 TEST(Lattice, RefusesABodyThinnerThanTwoElements) {
