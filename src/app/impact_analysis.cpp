@@ -88,7 +88,7 @@ void drawPlots(const fs::path& dir, std::initializer_list<const char*> scripts_t
     return;
   }
   const std::string check = fmt::format("{} -c 'import matplotlib, numpy, h5py' >/dev/null 2>&1", system_python);
-  if (std::system(check.c_str()) != 0) {
+  if (runOutsideMpi(check) != 0) {
     warn(
         "no pictures: matplotlib, numpy or h5py is missing (Debian: apt-get install python3-matplotlib "
         "python3-numpy python3-h5py)");
@@ -109,7 +109,7 @@ void drawPlots(const fs::path& dir, std::initializer_list<const char*> scripts_t
     if (std::string(script) == "back_projection.py" && !fs::exists(dir / "fragment_points.csv", error)) continue;
     const std::string command = fmt::format("{} {} {} >>{} 2>&1", system_python, shellQuoted(path.string()),
                                             shellQuoted(dir.string()), shellQuoted(log_file.string()));
-    if (std::system(command.c_str()) != 0)
+    if (runOutsideMpi(command) != 0)
       warn(fmt::format("{} failed (see {})", script, log_file.string()));
     else
       scripts_run.push_back(script);

@@ -60,7 +60,7 @@ void render(const RenderArguments& args) {
   }
   if (args.every > 0) command += fmt::format(" --every {}", args.every);
   if (!args.out.empty()) command += " --out " + shellQuoted(args.out);
-  int status = std::system(command.c_str());
+  int status = runOutsideMpi(command);
   // Under load, xvfb-run has been seen to hand pvbatch a display it could not reach (1 run in a
   // full parallel test suite; "bad X server connection", an abort): a second try gets a fresh
   // server. Exit status 1 is the script's own refusal (a field the run does not have): not retried.
@@ -68,7 +68,7 @@ void render(const RenderArguments& args) {
   if (status != 0 && !refused && !prefix.empty()) {
     log::info("kessler render: pvbatch failed under xvfb-run (exit status {}); trying once more",
               WIFEXITED(status) ? WEXITSTATUS(status) : status);
-    status = std::system(command.c_str());
+    status = runOutsideMpi(command);
   }
   if (status != 0) {
     log::info("kessler render: pvbatch failed (exit status {})", WIFEXITED(status) ? WEXITSTATUS(status) : status);

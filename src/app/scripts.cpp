@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -42,6 +44,22 @@ std::optional<fs::path> findProgram(const std::string& name) {
   return std::nullopt;
 }
 
+int runOutsideMpi(const std::string& command) {
+  static constexpr const char* prefixes[] = {"OMPI_", "PMIX_", "PMI_", "OPAL_", "PRTE_", "HYDRA_", "MPIR_"};
+  std::string unset;
+  for (char** e = environ; e != nullptr && *e != nullptr; ++e) {
+    const std::string entry = *e;
+    const std::string name = entry.substr(0, entry.find('='));
+    for (const char* prefix : prefixes)
+      if (name.rfind(prefix, 0) == 0) {
+        unset += " -u " + shellQuoted(name);
+        break;
+      }
+  }
+  if (unset.empty()) return std::system(command.c_str());
+  return std::system(fmt::format("env{} /bin/sh -c {}", unset, shellQuoted(command)).c_str());
+}
+
 void writeParaViewState(const fs::path& dir) {
   const std::optional<fs::path> pvpython = findProgram("pvpython");
   if (!pvpython) {
@@ -54,7 +72,7 @@ void writeParaViewState(const fs::path& dir) {
   const std::string command = fmt::format("{} {} state {} >>{} 2>&1", shellQuoted(pvpython->string()),
                                           shellQuoted((plotsDir() / "paraview_view.py").string()),
                                           shellQuoted(dir.string()), shellQuoted(log_file.string()));
-  if (std::system(command.c_str()) != 0) {
+  if (runOutsideMpi(command) != 0) {
     warn(fmt::format("the ParaView state was not written (see {})", log_file.string()));
     return;
   }

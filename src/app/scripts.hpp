@@ -16,6 +16,13 @@ std::filesystem::path plotsDir();
 // `text` single-quoted for the shell.
 std::string shellQuoted(const std::string& text);
 
+// Runs `command` with std::system, outside the MPI job this process may belong to: the launcher's
+// variables (OMPI_*, PMIX_*, PMI_*, OPAL_*, PRTE_*, HYDRA_*, MPIR_*) are taken from its
+// environment. A tool linked with MPI (ParaView's pvpython and pvbatch are) otherwise calls MPI_Init
+// as a member of the job, aborts, and leaves the job's ranks waiting in MPI_Finalize: a 3-rank run
+// hung so. Returns std::system's status.
+int runOutsideMpi(const std::string& command);
+
 // The program `name` in PATH, if there is one.
 std::optional<std::filesystem::path> findProgram(const std::string& name);
 
