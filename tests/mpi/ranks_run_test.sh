@@ -41,5 +41,10 @@ rm -rf "$dir"
 "$mpiexec" -np "$ranks" --oversubscribe "$kessler" run "$deck" --out "$dir" --quiet --threads 1 "$@"
 [ "$(json "$dir" status)" = completed ] || fail "the run did not complete: $(json "$dir" status)"
 [ "$(json "$dir" ranks)" = "$ranks" ] || fail "summary.json says $(json "$dir" ranks) ranks"
+# The helper programs run outside the job: with pvpython installed, the ParaView state is written
+# (pvpython, linked with MPI, once joined the job, failed and hung its ranks in MPI_Finalize).
+if command -v pvpython >/dev/null; then
+  [ -f "$dir/kessler.pvsm" ] || fail "no kessler.pvsm: $(tail -3 "$dir/plots/paraview.log" 2>/dev/null)"
+fi
 # The test must exercise failure, release and debris: eroded points in the last output.
 "$compare" "$work/one" "$dir" --min-eroded 20 || fail "the results differ from one process's"
