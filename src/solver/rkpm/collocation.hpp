@@ -21,9 +21,8 @@
 // lattice column under the hugoniot-3d shock moved sideways at up to 2 km/s (0.46 km/s held on the
 // faces), and pressure came out 12% low (1.3%). On a tet mesh the rollers still leak where two
 // meet (docs/validation.md, "RKPM").
-#include "solver/rkpm/model.hpp"
-
 #include "solver/rkpm/kernels.hpp"
+#include "solver/rkpm/model.hpp"
 
 #include <Eigen/SparseCholesky>
 
