@@ -12,10 +12,8 @@ SurfaceHolds surfaceHolds(const Model& model) {
   SurfaceHolds out;
   for (std::size_t f = 0; f < model.faces.size(); ++f) {
     const CellFace& face = model.faces[f];
-    if (face.outer >= 0) continue;
     for (int a = 0; a < 3; ++a)
-      if ((model.constrained[face.inner] & (held_at_surface << a)) &&
-          std::abs(face.area[a]) >= (1.0 - 1e-9) * face.area.norm()) {
+      if (surfaceFaceAlong(face, a) && (model.constrained[face.inner] & (held_at_surface << a))) {
         out.faces.push_back(static_cast<LocalIndex>(f));
         out.held.push_back({face.inner, a});
       }

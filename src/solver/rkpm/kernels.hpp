@@ -10,6 +10,7 @@
 #include "approx/reproducing_kernel.hpp"
 #include "core/types.hpp"
 
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -26,6 +27,13 @@ struct CellFace {
   LocalIndex inner = -1;
   LocalIndex outer = -1;
 };
+
+// A face of the body's surface whose normal lies along `axis` (to round-off): one a plane normal to
+// that axis can hold.
+inline bool surfaceFaceAlong(const CellFace& f, int axis) {
+  const double area = f.area.norm();
+  return f.outer < 0 && area > 0.0 && std::abs(f.area[axis]) >= (1.0 - 1e-9) * area;
+}
 
 // One row per particle: the particles column[offset[K]] ... column[offset[K + 1] - 1] and a value each.
 // A particle near a symmetry plane also sees images of particles across it (the mirrored copy of the

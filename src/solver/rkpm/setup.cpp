@@ -118,11 +118,9 @@ std::vector<LocalIndex> particlesOnPlane(const Model& model, const PlaneConstrai
   if (std::isinf(plane.tolerance)) return kessler::particlesOnPlane(points, plane);
   std::vector<std::uint8_t> held(static_cast<std::size_t>(points.size()), 0);
   for (const CellFace& f : model.faces) {
-    const double area = f.area.norm();
-    if (f.outer >= 0 || !(area > 0.0) || (plane.body >= 0 && points.body[f.inner] != plane.body)) continue;
-    // In the plane: its centroid on it, and its normal along the axis (to round-off).
-    const bool normal = std::abs(f.area[plane.axis]) >= (1.0 - 1e-9) * area;
-    if (normal && std::abs(f.centroid[plane.axis] - plane.offset) <= plane.tolerance + 1e-9 * std::sqrt(area))
+    if (!surfaceFaceAlong(f, plane.axis) || (plane.body >= 0 && points.body[f.inner] != plane.body)) continue;
+    // In the plane: its centroid on it.
+    if (std::abs(f.centroid[plane.axis] - plane.offset) <= plane.tolerance + 1e-9 * std::sqrt(f.area.norm()))
       held[static_cast<std::size_t>(f.inner)] = 1;
   }
   std::vector<LocalIndex> on;
