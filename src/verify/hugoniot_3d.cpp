@@ -140,8 +140,9 @@ Hugoniot3dResult runHugoniot3d(double mesh_size, MethodSettings settings, bool o
     if (lateral_lock)
       problem.planes.push_back(lockAxis(axis));
     else
-      for (double offset : {0.0, width})
-        problem.planes.push_back({.axis = axis, .offset = offset, .tolerance = 1e-6 * h});
+      for (const int side : {1, -1})
+        problem.rollers.push_back(
+            {.axis = axis, .offset = side > 0 ? 0.0 : width, .side = side, .tolerance = 1e-6 * h});
 
   Hugoniot3dResult r;
   r.reference_velocity = 0.5 * v;

@@ -39,11 +39,11 @@ Outcome waveSpeed() {
   problem.bodies = {
       boxBody("bar", {Vec3::Zero(), Vec3(2 * h, 2 * h, cells * h)}, {2, 2, cells}, Vec3::Zero(), material)};
   const double tol = 1e-9 * h;
-  problem.planes = {{.axis = 0, .offset = 0.0, .tolerance = tol},
-                    {.axis = 0, .offset = 2 * h, .tolerance = tol},
-                    {.axis = 1, .offset = 0.0, .tolerance = tol},
-                    {.axis = 1, .offset = 2 * h, .tolerance = tol},
-                    {.axis = 2, .offset = 0.0, .tolerance = tol, .velocity = v0}};
+  // Rollers on the four sides (uniaxial strain), a piston at z = 0.
+  for (const int axis : {0, 1})
+    for (const int side : {1, -1})
+      problem.rollers.push_back({.axis = axis, .offset = side > 0 ? 0.0 : 2 * h, .side = side, .tolerance = tol});
+  problem.planes = {{.axis = 2, .offset = 0.0, .tolerance = tol, .velocity = v0}};
 
   const NeoHookeanParameters p{.density = 2700.0, .youngs_modulus = 70e9, .poisson_ratio = 0.33};
   const double c_l = std::sqrt((p.bulkModulus() + 4.0 * p.shearModulus() / 3.0) / p.density);

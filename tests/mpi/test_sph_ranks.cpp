@@ -57,7 +57,7 @@ Outcome compareEveryStep(const Problem& problem, int steps) {
   EXPECT_GT(world().size(), 1);
   Model whole = buildModel(problem), mine = buildModel(problem);
   Integrator one(whole, settingsFor(problem));
-  Distribution distribution(world(), problem.symmetry_axes);
+  Distribution distribution(world(), mirrorBox(problem));
   Integrator part(mine, settingsFor(problem), &distribution);
   one.initialise();
   part.initialise();

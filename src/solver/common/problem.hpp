@@ -6,6 +6,7 @@
 #include "geometry/mesh.hpp"
 #include "geometry/structured_mesh.hpp"
 #include "material/material.hpp"
+#include "solver/common/mirror.hpp"
 #include "solver/common/particle_state.hpp"
 #include "solver/common/settings.hpp"
 #include "solver/common/walls.hpp"
@@ -43,12 +44,25 @@ struct PlaneConstraint {
   std::function<double(double)> history;
 };
 
+// A roller: a frictionless rigid plane x[axis] = offset that the bodies lie against, on its side
+// `side` (+1: x[axis] >= offset; -1: x[axis] <= offset). As a symmetry plane is: OTM holds the
+// carriers on it (within `tolerance`) to a zero normal velocity; SPH and RKPM see the mirror image
+// of the model across it (solver/common/mirror.hpp), so that a particle beside it has the whole of
+// its kernel.
+struct Roller {
+  int axis = 0;
+  double offset = 0.0;
+  int side = 1;
+  double tolerance = 0.0;
+};
+
 struct Problem {
   std::string method = "otm";  // the deck's solver.method
   std::vector<BodySetup> bodies;
   // Axes normal to symmetry planes through the origin: carriers on such a plane keep a zero normal
   // velocity.
   std::vector<int> symmetry_axes;
+  std::vector<Roller> rollers;
   std::vector<PlaneConstraint> planes;
   std::vector<RigidWall> walls;
   MethodSettings settings;
@@ -56,5 +70,10 @@ struct Problem {
   // initial crack, say).
   std::function<void(ParticleState&)> prepare;
 };
+
+// Where the model lies between its mirror planes: the symmetry planes (through the origin, the model
+// on their positive side) and the rollers. Throws kessler::Error for two planes on one side of an
+// axis.
+MirrorBox mirrorBox(const Problem& problem);
 
 }  // namespace kessler

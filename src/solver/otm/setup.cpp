@@ -169,6 +169,9 @@ Model buildModel(const Problem& problem) {
     for (int axis : problem.symmetry_axes) constrainPlane(model, axis, 0.0, 1e-6 * request->mesh_size, 0.0, body);
     log::info("  body {:<14} {:>9} nodes {:>9} points", setup.name, disc.nodes.size(), disc.points.size());
   }
+  // A roller holds the nodes on it, as a symmetry plane (OTM's nodes interpolate: no mirror image).
+  for (const Roller& roller : problem.rollers)
+    constrainPlane(model, roller.axis, roller.offset, roller.tolerance, 0.0, -1);
   for (const PlaneConstraint& plane : problem.planes)
     constrainPlane(model, plane.axis, plane.offset, plane.tolerance, plane.velocity, plane.body);
   if (problem.prepare) problem.prepare(model);

@@ -72,7 +72,7 @@ void Integrator::prepare() {
   {
     ScopedPhase phase(timers_, "kernels");
     kernels_ = buildKernels({model_.reference, points.body, support, points.volume0, model_.cell_volume, model_.faces,
-                             names, settings_.symmetry_axes, holds.faces});
+                             names, settings_.mirrors, holds.faces});
     transposed_ = transpose(kernels_.gradient);
   }
   // Row-sum lumped masses: the coefficients carry the particles' momentum, sum_I m_I vhat_I =
@@ -359,6 +359,9 @@ void Integrator::updateMaterials(double dt) {
 // The particles where their coefficients put them.
 void Integrator::place() {
   interpolate(kernels_.psi, model_.coefficient_x, model_.points.x);
+  if (!kernels_.shift.empty())
+    for (LocalIndex k = 0; k < model_.points.owned; ++k)
+      model_.points.x[k] += kernels_.shift[static_cast<std::size_t>(k)];
   interpolate(kernels_.psi, model_.coefficient_v, model_.points.v);
 }
 

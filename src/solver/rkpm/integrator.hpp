@@ -35,7 +35,7 @@ struct Settings {
   SolverSettings solver;  // its contact's friction is the sliding contact's (RKPM has no seizing contact)
   RkpmOptions rkpm;
   std::vector<RigidWall> walls;
-  std::vector<int> symmetry_axes;
+  MirrorBox mirrors;  // the symmetry planes and rollers (solver/common/mirror.hpp)
 };
 
 class Integrator {

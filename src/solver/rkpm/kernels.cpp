@@ -16,36 +16,35 @@ namespace kessler::rkpm {
 namespace {
 
 // The kernel values at one point of body `body`, as (particle, mirror, value) entries: the particles
-// in the search's order, then each image set (by mirror) in the same order.
+// in the search's order, then each image (in the order of its code) in the same order; `shift` is
+// the sum of the values times their images' shifts.
 class Evaluator {
  public:
-  Evaluator(const KernelInput& in, const CellList& cells, double reach) : in_(in), cells_(cells), reach_(reach) {
-    for (const int a : in.symmetry_axes) planes_ |= static_cast<std::uint8_t>(1u << a);
-  }
+  Evaluator(const KernelInput& in, const CellList& cells, const Mirrors& mirrors, double reach)
+      : in_(in), cells_(cells), mirrors_(mirrors), reach_(reach) {}
 
   // False where the moment matrix is singular (rcond() then says how nearly).
   bool at(const Vec3& x, int body, double scale, std::vector<LocalIndex>& who, std::vector<std::uint8_t>& mirror,
-          std::vector<double>& psi) {
+          std::vector<double>& psi, Vec3& shift) {
     who.clear();
     mirror.clear();
     samples_.clear();
-    for (std::uint8_t m = 0; m < 8; ++m) {
-      if ((m & planes_) != m) continue;
-      bool near = true;  // an image set is seen only within reach of each of its planes
-      for (int a = 0; a < 3; ++a)
-        if ((m & (1u << a)) && !(std::abs(x[a]) < reach_)) near = false;
-      if (!near) continue;
-      // The image of particle i seen from x is i seen from the image of x: |x - R X_i| = |R x - X_i|.
-      const Vec3 image = reflect(x, m);
-      cells_.forEachWithin(image, reach_, [&](LocalIndex i, double d2) {
+    codes_.clear();
+    mirrors_.near(x, reach_, [&](std::uint8_t m) {
+      // The image T X_i of particle i seen from x is i seen from T^-1 x: |x - T X_i| = |T^-1 x - X_i|.
+      cells_.forEachWithin(mirrors_.point(x, mirrors_.inverse(m)), reach_, [&](LocalIndex i, double d2) {
         if (in_.body[i] != body || d2 >= in_.support[i] * in_.support[i]) return;
         who.push_back(i);
-        mirror.push_back(m);
-        samples_.push_back({x - reflect(in_.reference[i], m), in_.support[i], in_.volume[i]});
+        mirror.push_back(mirrors_.flips(m));
+        codes_.push_back(m);
+        samples_.push_back({x - mirrors_.point(in_.reference[i], m), in_.support[i], in_.volume[i]});
       });
-    }
+    });
     psi.assign(who.size(), 0.0);
     rcond_ = rk::shapeValues(samples_, scale, psi);
+    shift = Vec3::Zero();
+    for (std::size_t e = 0; e < codes_.size(); ++e)
+      if (codes_[e] != 0) shift += psi[e] * (mirrors_.point(Vec3::Zero(), codes_[e]));
     return rcond_ >= rk::min_rcond;
   }
   double rcond() const { return rcond_; }
@@ -53,9 +52,10 @@ class Evaluator {
  private:
   const KernelInput& in_;
   const CellList& cells_;
+  const Mirrors& mirrors_;
   double reach_;
-  std::uint8_t planes_ = 0;
   std::vector<rk::Sample> samples_;
+  std::vector<std::uint8_t> codes_;
   double rcond_ = 0.0;
 };
 
@@ -95,6 +95,7 @@ Kernels buildKernels(const KernelInput& in) {
   const double reach = *std::max_element(in.support.begin(), in.support.end());
   CellList cells;
   cells.build(in.reference, n, reach);
+  const Mirrors mirrors = in.mirrors.any() ? Mirrors(in.mirrors, reach) : Mirrors();
 
   // Where a moment matrix was singular: the first such point in index order (faces after particles).
   struct Failure {
@@ -111,29 +112,34 @@ Kernels buildKernels(const KernelInput& in) {
 
   // The values at the particles.
   std::vector<Row<double>> rows(static_cast<std::size_t>(n));
+  std::vector<Vec3> shift(static_cast<std::size_t>(n));
 #pragma omp parallel
   {
-    Evaluator e(in, cells, reach);
+    Evaluator e(in, cells, mirrors, reach);
 #pragma omp for schedule(dynamic, 256)
     for (LocalIndex p = 0; p < n; ++p) {
       Row<double>& r = rows[static_cast<std::size_t>(p)];
-      if (!e.at(in.reference[p], in.body[p], in.support[p], r.column, r.mirror, r.value))
+      if (!e.at(in.reference[p], in.body[p], in.support[p], r.column, r.mirror, r.value,
+                shift[static_cast<std::size_t>(p)]))
         fail(static_cast<std::size_t>(p), in.reference[p], in.body[p], e.rcond());
     }
   }
   k.psi = flatten(rows);
+  if (std::any_of(shift.begin(), shift.end(), [](const Vec3& s) { return s != Vec3::Zero(); }))
+    k.shift = std::move(shift);
 
   // The values at the faces' centroids.
   const std::size_t faces = in.faces.size();
   rows.assign(faces, {});
 #pragma omp parallel
   {
-    Evaluator e(in, cells, reach);
+    Evaluator e(in, cells, mirrors, reach);
+    Vec3 unused;
 #pragma omp for schedule(dynamic, 256)
     for (std::size_t f = 0; f < faces; ++f) {
       const CellFace& face = in.faces[f];
       Row<double>& r = rows[f];
-      if (!e.at(face.centroid, in.body[face.inner], in.support[face.inner], r.column, r.mirror, r.value))
+      if (!e.at(face.centroid, in.body[face.inner], in.support[face.inner], r.column, r.mirror, r.value, unused))
         fail(static_cast<std::size_t>(n) + f, face.centroid, in.body[face.inner], e.rcond());
     }
   }
@@ -199,6 +205,7 @@ Kernels buildKernels(const KernelInput& in) {
     }
   }
   k.gradient = flatten(gradients);
+
   std::vector<Row<double>> kept(in.kept_faces.size());
   for (std::size_t r = 0; r < kept.size(); ++r) {
     const auto f = static_cast<std::size_t>(in.kept_faces[r]);

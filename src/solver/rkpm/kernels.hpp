@@ -9,6 +9,7 @@
 // linear field are its gradient, which is the integration constraint of Chen et al. 2001).
 #include "approx/reproducing_kernel.hpp"
 #include "core/types.hpp"
+#include "solver/common/mirror.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -36,10 +37,10 @@ inline bool surfaceFaceAlong(const CellFace& f, int axis) {
 }
 
 // One row per particle: the particles column[offset[K]] ... column[offset[K + 1] - 1] and a value each.
-// A particle near a symmetry plane also sees images of particles across it (the mirrored copy of the
-// model that the run leaves out): mirror[e] sets the bits of the axes across whose planes entry e's
-// particle is reflected (solver/common/mirror.hpp), 0 for the particle itself. An image's coefficient
-// is the reflection of its particle's.
+// A particle near a mirror plane also sees images of particles across it (a symmetry plane's mirrored
+// copy of the model that the run leaves out, or a roller's): mirror[e] sets the bits of the axes
+// along which entry e's image is reflected (solver/common/mirror.hpp), 0 for the particle itself or
+// an image translated between two planes. An image's coefficient is its particle's, reflected so.
 template <class T>
 struct Table {
   std::vector<LocalIndex> offset;  // rows + 1 entries (none for an empty table)
@@ -53,6 +54,9 @@ struct Kernels {
   Table<double> psi;       // row K: Psi_I(X_K)
   Table<Vec3> gradient;    // row J: grad~ Psi_I(X_J)
   Table<double> at_faces;  // row r: Psi_I at the centroid of face kept_faces[r]
+  // Row K's sum of Psi times its images' shifts (x -> R x + t): the particle's position is
+  // sum_I Psi_I(X_K) R xhat_I + shift[K]. Empty when every image's shift is zero (symmetry planes).
+  std::vector<Vec3> shift;
 };
 
 struct KernelInput {
@@ -63,7 +67,7 @@ struct KernelInput {
   std::span<const double> cell_volume;          // the volume of each particle's cell, m^3
   std::span<const CellFace> faces;              // every cell's faces, each once
   std::span<const std::string> bodies;          // the bodies' names, for errors
-  std::span<const int> symmetry_axes;           // the axes normal to the problem's symmetry planes
+  MirrorBox mirrors;                            // the problem's mirror planes (symmetry planes, rollers)
   std::span<const LocalIndex> kept_faces = {};  // faces whose values Kernels::at_faces keeps
 };
 
@@ -71,7 +75,7 @@ struct KernelInput {
 Kernels buildKernels(const KernelInput& in);
 
 // The particles' values from the coefficients, out_K = sum_I Psi_I(X_K) chat_I (an image's
-// coefficient reflected): their positions from xhat, their velocities from vhat.
+// coefficient reflected): their velocities from vhat, and with Kernels::shift their positions.
 void interpolate(const Table<double>& psi, std::span<const Vec3> coefficients, std::span<Vec3> out);
 // The same for particle k alone.
 Vec3 valueAt(const Table<double>& psi, std::span<const Vec3> coefficients, LocalIndex k);

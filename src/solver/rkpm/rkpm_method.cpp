@@ -8,7 +8,7 @@
 namespace kessler::rkpm {
 
 Settings settingsFor(const Problem& problem) {
-  return Settings{problem.settings.solver, problem.settings.rkpm, problem.walls, problem.symmetry_axes};
+  return Settings{problem.settings.solver, problem.settings.rkpm, problem.walls, mirrorBox(problem)};
 }
 
 RkpmMethod::RkpmMethod(Model model, const Settings& settings)

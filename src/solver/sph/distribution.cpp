@@ -12,7 +12,7 @@ namespace kessler::sph {
 namespace {
 
 // The particles with the integrator's arrays that travel with them. Their positions for the
-// partition and the halo (`x`) are folded into the modelled side of the symmetry planes (Distribution).
+// partition and the halo (`x`) are folded into the model's side of its mirror planes (Distribution).
 struct Travelling {
   Particles particles;
   std::vector<double>& volume_rate;
@@ -21,7 +21,7 @@ struct Travelling {
   std::vector<Index>& id;
   LocalIndex& owned;
 
-  Travelling(Model& model, Carried carried, std::vector<Vec3>& folded, const std::vector<int>& axes)
+  Travelling(Model& model, Carried carried, std::vector<Vec3>& folded, const Mirrors& mirrors)
       : particles(model),
         volume_rate(carried.volume_rate),
         lattice_reach(carried.lattice_reach),
@@ -32,10 +32,7 @@ struct Travelling {
     volume_rate.resize(position.size(), 0.0);
     lattice_reach.resize(position.size(), 0.0);
     folded.resize(position.size());
-    for (std::size_t p = 0; p < position.size(); ++p) {
-      folded[p] = position[p];
-      for (const int a : axes) folded[p][a] = std::abs(folded[p][a]);
-    }
+    for (std::size_t p = 0; p < position.size(); ++p) folded[p] = mirrors.fold(position[p]);
   }
 
   template <class Store, class Visit>
@@ -49,13 +46,13 @@ struct Travelling {
 
 }  // namespace
 
-Distribution::Distribution(const parallel::Communicator& comm, std::vector<int> symmetry_axes)
-    : comm_(comm), partition_(comm), axes_(std::move(symmetry_axes)) {}
+Distribution::Distribution(const parallel::Communicator& comm, const MirrorBox& mirrors)
+    : comm_(comm), partition_(comm), mirrors_(mirrors, 0.0) {}
 
 void Distribution::split(Model& model, Carried carried) {
   PointStore& points = model.points;
   KESSLER_VERIFY(points.owned == points.size(), "a model split twice (it holds ghosts)");
-  Travelling travelling(model, carried, folded_, axes_);
+  Travelling travelling(model, carried, folded_, mirrors_);
   // Each rank offers Zoltan a slice of the particles, so that every particle is cut once.
   const auto n = static_cast<std::size_t>(points.size());
   const auto ranks = static_cast<std::size_t>(comm_.size()), rank = static_cast<std::size_t>(comm_.rank());
@@ -73,7 +70,7 @@ void Distribution::split(Model& model, Carried carried) {
 
 bool Distribution::rebuild(Model& model, Carried carried, std::span<const double> work,
                            const std::function<double(LocalIndex)>& reach) {
-  Travelling travelling(model, carried, folded_, axes_);
+  Travelling travelling(model, carried, folded_, mirrors_);
   const std::vector<LocalIndex> own = halo_.ownEntries(travelling);
   std::vector<double> own_work(own.size(), 1.0);
   if (work.size() == travelling.x.size())

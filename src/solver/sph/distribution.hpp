@@ -9,6 +9,7 @@
 #include "parallel/communicator.hpp"
 #include "parallel/halo.hpp"
 #include "parallel/partition.hpp"
+#include "solver/common/mirror.hpp"
 #include "solver/common/own_sums.hpp"
 #include "solver/sph/model.hpp"
 
@@ -27,14 +28,15 @@ struct Carried {
   std::vector<double>& lattice_reach;
 };
 
-// Particles may cross a symmetry plane (debris), and pair with the images of particles far from
-// them: a particle's place in the partition and the halo is its position folded into the modelled
-// side (|x_a| on each plane's axis a). Folding brings no two particles further apart than they or
-// their images are (|(|a| - |b|)| <= |a -+ b|), so every reach below holds for images too.
+// Particles may cross a mirror plane (debris), and pair with the images of particles far from
+// them: a particle's place in the partition and the halo is its position folded into the model's
+// side of the planes (Mirrors::fold; |x_a| for a symmetry plane normal to axis a). Folding brings no
+// two particles further apart than they or their images are (|(|a| - |b|)| <= |a -+ b|), so every
+// reach below holds for images too.
 
 class Distribution {
  public:
-  Distribution(const parallel::Communicator& comm, std::vector<int> symmetry_axes);
+  Distribution(const parallel::Communicator& comm, const MirrorBox& mirrors);
 
   // Keeps this rank's part of a model that every rank built alike: RCB cuts of the particles (each
   // weighted by one), and the particles in this rank's subdomain. No ghosts yet (rebuild).
@@ -79,7 +81,7 @@ class Distribution {
   parallel::Partition partition_;
   parallel::Halo halo_;
   parallel::Rebalance balance_;
-  std::vector<int> axes_;     // the symmetry planes' normals
+  Mirrors mirrors_;           // the mirror planes (for folding)
   std::vector<Vec3> folded_;  // per particle held, its folded position (a field while it travels)
   LocalIndex own_ = 0;
   long layout_ = 0;

@@ -202,7 +202,8 @@ void Integrator::search() {
     h_[p] = smoothingLength(static_cast<LocalIndex>(p));
     spacing_[p] = points.spacing(static_cast<LocalIndex>(p));
   }
-  pairs_.build(points.x, h_, points.owned, settings_.symmetry_axes, own);
+  pairs_.build(points.x, h_, points.owned, settings_.mirrors, own);
+  const Mirrors& mirrors = pairs_.mirrors();
   correction_.resize(n);
   struck_.assign(n, -1);
   // Which pairs are active: once per pair (the test is symmetric in its ends).
@@ -211,9 +212,9 @@ void Integrator::search() {
     for (Index e = pairs_.offset[i]; e < pairs_.offset[i + 1]; ++e) {
       const LocalIndex j = pairs_.other[e];
       const std::uint8_t m = pairs_.mirror[e];
-      const Vec3 d = points.x[i] - reflect(points.x[j], m);
+      const Vec3 d = points.x[i] - mirrors.point(points.x[j], m);
       const bool within = points.body[i] == points.body[j] && !points.debris(i) && !points.debris(j);
-      const bool approaching = (points.v[i] - reflect(points.v[j], m)).dot(d) < 0.0;
+      const bool approaching = (points.v[i] - mirrors.vector(points.v[j], m)).dot(d) < 0.0;
       const double touching = (1.0 + contact_gap) * 0.5 * (spacing_[i] + spacing_[j]);
       const bool pressed = points.stress[i].trace() < 0.0 && points.stress[j].trace() < 0.0;
       pairs_.active[e] = within || (approaching && d.squaredNorm() < touching * touching) || pressed;
@@ -225,7 +226,7 @@ void Integrator::search() {
     Mat3 moment = Mat3::Zero();
     pairs_.forEachOf(i, [&](LocalIndex j, std::uint8_t m, const Vec3& grad, bool active) {
       if (!active) return;
-      const Vec3 d = points.x[i] - reflect(points.x[j], m);
+      const Vec3 d = points.x[i] - mirrors.point(points.x[j], m);
       moment.noalias() -= points.volume[j] * d * grad.transpose();
       if (points.debris(i) && !points.debris(j) && points.body[j] != points.body[i]) struck_[i] = points.body[j];
     });
@@ -252,6 +253,7 @@ void Integrator::search() {
 void Integrator::forces() {
   ScopedPhase phase(timers_, "assembly");
   const PointStore& points = model_.points;
+  const Mirrors& mirrors = pairs_.mirrors();
   const SphOptions& o = settings_.sph;
   const auto n = static_cast<std::size_t>(points.owned);
   acceleration_.resize(n);
@@ -294,7 +296,7 @@ void Integrator::forces() {
       const Vec3& grad = pairs_.gradient[e];
       Vec3 f = Vec3::Zero();
       if (pairs_.active[e]) {
-        const Mat3 sum = stress_b[i] + reflect(stress_b[j], m);
+        const Mat3 sum = stress_b[i] + mirrors.tensor(stress_b[j], m);
         f.noalias() += points.volume[i] * points.volume[j] * (sum * grad);
         if ((tensile[i] || tensile[j]) && points.body[i] == points.body[j] && !points.broken[i] && !points.broken[j]) {
           const double h_ij = 0.5 * (h_[i] + h_[j]);
@@ -302,13 +304,14 @@ void Integrator::forces() {
           const double ratio = reference > 0.0 ? std::min(pairs_.kernel[e] / reference, 1.0) : 0.0;
           double fn = 1.0;
           for (int k = 0; k < o.artificial_stress_exponent; ++k) fn *= ratio;
-          f.noalias() += points.mass[i] * points.mass[j] * fn * ((artificial[i] + reflect(artificial[j], m)) * grad);
+          f.noalias() +=
+              points.mass[i] * points.mass[j] * fn * ((artificial[i] + mirrors.tensor(artificial[j], m)) * grad);
         }
       }
       PairShare& share = pair_share_[e];
       share.power = share.signal = 0.0;
-      const Vec3 d = points.x[i] - reflect(points.x[j], m);
-      const Vec3 v = points.v[i] - reflect(points.v[j], m);
+      const Vec3 d = points.x[i] - mirrors.point(points.x[j], m);
+      const Vec3 v = points.v[i] - mirrors.vector(points.v[j], m);
       const double approach = v.dot(d);
       if (approach < 0.0 && pairs_.active[e]) {
         const double h_ij = 0.5 * (h_[i] + h_[j]);
@@ -340,7 +343,7 @@ void Integrator::forces() {
     }
     for (Index k = pairs_.listed_offset[i]; k < pairs_.listed_offset[i + 1]; ++k) {
       const PairShare& share = pair_share_[pairs_.listed_by[k]];
-      f -= reflect(share.force, pairs_.listed_mirror[k]);
+      f -= mirrors.vector(share.force, pairs_.listed_mirror[k]);
       power += share.power;
       signal = std::max(signal, share.signal);
     }
@@ -359,6 +362,7 @@ void Integrator::forces() {
 // (two passes: the first reads the volumes and velocities that the second changes).
 void Integrator::deform(double dt) {
   PointStore& points = model_.points;
+  const Mirrors& mirrors = pairs_.mirrors();
   volume_rate_.resize(static_cast<std::size_t>(points.owned));
   const Share own = share();
   LocalIndex bad = points.owned;
@@ -369,7 +373,8 @@ void Integrator::deform(double dt) {
     if (points.debris(i)) continue;
     Mat3 gradient = Mat3::Zero();
     pairs_.forEachOf(i, [&](LocalIndex j, std::uint8_t m, const Vec3& grad, bool active) {
-      if (active) gradient.noalias() += points.volume[j] * (reflect(points.v[j], m) - points.v[i]) * grad.transpose();
+      if (active)
+        gradient.noalias() += points.volume[j] * (mirrors.vector(points.v[j], m) - points.v[i]) * grad.transpose();
     });
     const Mat3 L = gradient * correction_[i];
     switchViscosity(i, L.trace(), dt);

@@ -31,7 +31,7 @@ struct Settings {
   SolverSettings solver;
   SphOptions sph;
   std::vector<RigidWall> walls;
-  std::vector<int> symmetry_axes;
+  MirrorBox mirrors;  // the symmetry planes and rollers (solver/common/mirror.hpp)
 };
 
 class Integrator {

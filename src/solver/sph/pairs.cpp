@@ -9,8 +9,8 @@
 
 namespace kessler::sph {
 
-void Pairs::build(std::span<const Vec3> x, std::span<const double> h, LocalIndex count,
-                  const std::vector<int>& symmetry_axes, const Share& share) {
+void Pairs::build(std::span<const Vec3> x, std::span<const double> h, LocalIndex count, const MirrorBox& box,
+                  const Share& share) {
   const auto n = static_cast<std::size_t>(count);
   // The whole run's largest smoothing length and cell size (a distributed run's ranks agree on
   // them, so that each particle meets its candidates in the one process's order).
@@ -21,6 +21,10 @@ void Pairs::build(std::span<const Vec3> x, std::span<const double> h, LocalIndex
     own += share.own(static_cast<LocalIndex>(i)) ? 1 : 0;
   }
   h_max = share.max(h_max);
+  // The images a particle's search reaches (h_i + h_max), enough for twice as far when they are made
+  // anew: the codes name the same images in the same order, however far the table reaches.
+  if (mirrors_.box().lo != box.lo || mirrors_.box().hi != box.hi || (box.any() && mirrors_.reach() < 2.0 * h_max))
+    mirrors_ = Mirrors(box, 4.0 * h_max);
   const double cell_size = agreedCellSize(x, count, own, 2.0 * h_max, share);
   if (n == 0) {
     *this = Pairs{};
@@ -30,27 +34,20 @@ void Pairs::build(std::span<const Vec3> x, std::span<const double> h, LocalIndex
   }
   offset.assign(n + 1, 0);
   cells_.build(x, count, cell_size, /*enlarge=*/!share.comm);
-  // The image sets a particle near the planes sees: each non-empty subset of the axes whose planes
-  // lie within its reach.
-  std::uint8_t axes = 0;
-  for (const int a : symmetry_axes) axes |= static_cast<std::uint8_t>(1u << a);
+  // The images a particle near the planes sees: those whose part of space lies within its reach.
+  // The image T x_j of j lies within the reach of x_i where j lies within it of T^-1 x_i.
   const auto visit = [&](std::size_t i, auto&& f) {
     const double reach = h[i] + h_max;
     const bool ghost = !share.own(static_cast<LocalIndex>(i));
-    for (std::uint8_t m = 0; m < 8; ++m) {
-      if ((m & axes) != m) continue;
-      bool near = true;
-      for (int a = 0; a < 3; ++a)
-        if ((m & (1u << a)) && x[i][a] >= reach) near = false;
-      if (!near) continue;
-      cells_.forEachWithin(reflect(x[i], m), reach, [&](LocalIndex j, double d2) {
+    mirrors_.near(x[i], reach, [&](std::uint8_t m) {
+      cells_.forEachWithin(mirrors_.point(x[i], mirrors_.inverse(m)), reach, [&](LocalIndex j, double d2) {
         // Each pair once, by its lower particle (a particle's own image once).
         if (static_cast<std::size_t>(j) < i || (m == 0 && static_cast<std::size_t>(j) == i)) return;
         if (ghost && !share.own(j)) return;  // two ghosts: no own particle reads the pair
         const double support = h[i] + h[static_cast<std::size_t>(j)];
         if (d2 < support * support) f(j, m);
       });
-    }
+    });
   };
   // One pass over the cell list: each thread lists the pairs of a contiguous block of particles in
   // its own buffer, and the blocks are joined in particle order, so the arrays are the same for any
@@ -89,7 +86,7 @@ void Pairs::build(std::span<const Vec3> x, std::span<const double> h, LocalIndex
   for (std::size_t i = 0; i < n; ++i)
     for (auto e = static_cast<std::size_t>(offset[i]); e < static_cast<std::size_t>(offset[i + 1]); ++e) {
       const auto j = static_cast<std::size_t>(other[e]);
-      const Vec3 d = x[i] - reflect(x[j], mirror[e]);
+      const Vec3 d = x[i] - mirrors_.point(x[j], mirror[e]);
       const double r = d.norm(), h_ij = 0.5 * (h[i] + h[j]);
       kernel[e] = CubicSpline::value(r, h_ij);
       gradient[e] = r > 0.0 ? Vec3(CubicSpline::slope(r, h_ij) / r * d) : Vec3::Zero();
@@ -107,7 +104,7 @@ void Pairs::build(std::span<const Vec3> x, std::span<const double> h, LocalIndex
       [&](std::size_t k, Index e, LocalIndex i) {
         listed_by[k] = e;
         listed_other[k] = i;
-        listed_mirror[k] = mirror[e];
+        listed_mirror[k] = mirrors_.inverse(mirror[e]);
       });
   self_images_ = offset[n] - listed_offset[n];
 }

@@ -1,15 +1,16 @@
 #pragma once
 // SPH's neighbour pairs (docs/theory.md §10): the particles i, j within the support h_i + h_j (the
-// mean smoothing length's 2h), and the images of particles across the problem's symmetry planes (a
-// mirrored copy of the model that the run leaves out). Built anew at every step's positions from a
-// cell list.
+// mean smoothing length's 2h), and the images of particles across the problem's mirror planes (its
+// symmetry planes, a mirrored copy of the model that the run leaves out, and its rollers). Built anew
+// at every step's positions from a cell list.
 //
 // Each pair is listed once, by its lower particle i (j > i, or j >= i for an image: a particle near
 // a plane meets its own image), with i's view of it: the kernel and its gradient at
-// d = x_i - R x_j (R the reflection across the pair's planes). j sees the same pair as the image of
-// i, at d_j = -R d, with the gradient -R grad_i W: what is computed once per pair reaches both ends,
-// j's share reflected. Each particle gathers its pairs' shares in a fixed order (those it lists,
-// then those that list it, in the order of their listing particle), the same for any thread count.
+// d = x_i - T x_j (T the pair's image, x -> R x + t with R a reflection, solver/common/mirror.hpp).
+// j sees the same pair as the image of i by the inverse of T, at d_j = -R d, with the gradient
+// -R grad_i W: what is computed once per pair reaches both ends, j's share reflected. Each particle gathers its pairs'
+// shares in a fixed order (those it lists, then those that list it, in the order of their listing particle), the same
+// for any thread count.
 #include "search/cell_list.hpp"
 #include "solver/common/mirror.hpp"
 #include "solver/common/own_sums.hpp"
@@ -24,7 +25,7 @@ namespace kessler::sph {
 struct Pairs {
   std::vector<Index> offset;         // the pairs particle i lists are [offset[i], offset[i + 1])
   std::vector<LocalIndex> other;     // j
-  std::vector<std::uint8_t> mirror;  // the image of j across these planes (0: j itself)
+  std::vector<std::uint8_t> mirror;  // the image of j (a code of mirrors(); 0: j itself)
   std::vector<std::uint8_t> active;  // takes part in the deformation and the stress (Integrator)
   std::vector<Vec3> gradient;        // grad_i W(x_i - x_j', h_ij), h_ij = (h_i + h_j) / 2
   std::vector<double> kernel;        // W(|x_i - x_j'|, h_ij)
@@ -34,14 +35,16 @@ struct Pairs {
   std::vector<Index> listed_offset;
   std::vector<Index> listed_by;
   std::vector<LocalIndex> listed_other;
-  std::vector<std::uint8_t> listed_mirror;
+  std::vector<std::uint8_t> listed_mirror;  // the image of the listing particle as j meets it
 
   // The pairs of the first `count` positions with smoothing lengths h, and their images across the
-  // planes normal to `symmetry_axes` (particles at x[a] >= 0). With `share` (a distributed run's
-  // own particles and ghosts, in id order), the cells are the whole run's, and pairs of two ghosts
-  // are left out (no own particle reads them: a ghost's sums are its owner's). Collective then.
-  void build(std::span<const Vec3> x, std::span<const double> h, LocalIndex count,
-             const std::vector<int>& symmetry_axes, const Share& share = {});
+  // mirror planes of `box`. With `share` (a distributed run's own particles and ghosts, in id order),
+  // the cells are the whole run's, and pairs of two ghosts are left out (no own particle reads them:
+  // a ghost's sums are its owner's). Collective then.
+  void build(std::span<const Vec3> x, std::span<const double> h, LocalIndex count, const MirrorBox& box,
+             const Share& share = {});
+  // The images the codes in `mirror` and `listed_mirror` name.
+  const Mirrors& mirrors() const { return mirrors_; }
   Index size() const { return static_cast<Index>(other.size()); }
   // Each particle's pairs counted from both ends (a particle's pair with its own image once).
   Index neighbourCount() const { return 2 * size() - self_images_; }
@@ -54,7 +57,7 @@ struct Pairs {
     for (Index e = offset[i]; e < offset[i + 1]; ++e) f(other[e], mirror[e], gradient[e], active[e] != 0);
     for (Index k = listed_offset[i]; k < listed_offset[i + 1]; ++k) {
       const Index e = listed_by[k];
-      f(listed_other[k], listed_mirror[k], Vec3(-reflect(gradient[e], listed_mirror[k])), active[e] != 0);
+      f(listed_other[k], listed_mirror[k], Vec3(-mirrors_.vector(gradient[e], listed_mirror[k])), active[e] != 0);
     }
   }
 
@@ -64,6 +67,7 @@ struct Pairs {
     std::uint8_t mirror;
   };
   CellList cells_;
+  Mirrors mirrors_;
   std::vector<Index> count_;
   std::vector<std::uint32_t> scratch_;     // the transpose's counters
   std::vector<std::vector<Found>> found_;  // each thread's pairs, in particle order

@@ -9,13 +9,13 @@
 namespace kessler::sph {
 
 Settings settingsFor(const Problem& problem) {
-  return Settings{problem.settings.solver, problem.settings.sph, problem.walls, problem.symmetry_axes};
+  return Settings{problem.settings.solver, problem.settings.sph, problem.walls, mirrorBox(problem)};
 }
 
 namespace {
 
 std::unique_ptr<Distribution> distributionFor(const parallel::Communicator* ranks, const Settings& settings) {
-  return ranks && ranks->size() > 1 ? std::make_unique<Distribution>(*ranks, settings.symmetry_axes) : nullptr;
+  return ranks && ranks->size() > 1 ? std::make_unique<Distribution>(*ranks, settings.mirrors) : nullptr;
 }
 
 }  // namespace

@@ -64,7 +64,7 @@ Kernels kernelsOf(const Model& model, const Problem& problem) {
   for (const double s : model.points.spacing0) support.push_back(problem.settings.rkpm.support * s);
   const std::vector<std::string> names{"block"};
   return buildKernels({model.reference, model.points.body, support, model.points.volume0, model.cell_volume,
-                       model.faces, names, problem.symmetry_axes});
+                       model.faces, names, mirrorBox(problem)});
 }
 
 TEST(ReproducingKernel, ReproducesLinearFieldsOnIrregularParticles) {
@@ -166,6 +166,39 @@ TEST(Rkpm, PatchTestAcrossSymmetryPlanes) {
   expectPatchTest(problem, jittered(problem), G, Vec3(0.0, 0.0, 3e-3));
 }
 
+// Between two rollers facing each other (x = 0 and x = 4 mm) and beside a third (y <= 3 mm), on tet
+// cells: the images repeat across both x planes. A field they share (u_x = 0, u_y odd about y = 3 mm,
+// u_z even about every plane) passes the patch test, and the kernels with their shifts put every
+// particle where it is.
+TEST(Rkpm, PatchTestBetweenRollers) {
+  BodySetup body;
+  body.mesh =
+      geometry::discretise(geometry::structuredBoxMesh(geometry::Box{Vec3::Zero(), Vec3(4e-3, 3e-3, 3e-3)}, {4, 3, 3}));
+  Problem problem = block(body);
+  problem.rollers = {{.axis = 0, .offset = 0.0, .side = 1},
+                     {.axis = 0, .offset = 4e-3, .side = -1},
+                     {.axis = 1, .offset = 3e-3, .side = -1}};
+  const Model model = buildModel(problem);
+  const Mat3 G = Vec3(0.0, -0.08, 0.03).asDiagonal();
+  expectPatchTest(problem, model, G, Vec3(0.0, 0.08 * 3e-3, 1e-3));
+  const Kernels k = kernelsOf(model, problem);
+  ASSERT_EQ(k.shift.size(), model.reference.size());
+  double worst = 0.0;
+  for (std::size_t j = 0; j < model.reference.size(); ++j) {
+    Vec3 x = k.shift[j];
+    for (LocalIndex e = k.psi.offset[j]; e < k.psi.offset[j + 1]; ++e) {
+      const auto s = static_cast<std::size_t>(e);
+      x += k.psi.value[s] * reflect(model.reference[static_cast<std::size_t>(k.psi.column[s])], k.psi.mirror[s]);
+    }
+    worst = std::max(worst, (x - model.reference[j]).norm());
+  }
+  EXPECT_LT(worst, 1e-15);
+  // Each particle beside x = 4 mm sees images across it.
+  bool image = false;
+  for (std::size_t e = 0; e < k.psi.mirror.size(); ++e) image = image || k.psi.mirror[e] != 0;
+  EXPECT_TRUE(image);
+}
+
 // The prescribed velocities hold at their particles after collocation, to round-off, whatever the
 // other coefficients are.
 TEST(Rkpm, VelocityCollocationHoldsThePrescribedVelocity) {
@@ -255,7 +288,7 @@ TEST(Rkpm, PlanesHoldTheVelocityOnTheSurfaceFaces) {
   for (const double s : model.points.spacing0) support.push_back(problem.settings.rkpm.support * s);
   const std::vector<std::string> names{"block"};
   const Kernels k = buildKernels({model.reference, model.points.body, support, model.points.volume0, model.cell_volume,
-                                  model.faces, names, problem.symmetry_axes, holds.faces});
+                                  model.faces, names, mirrorBox(problem), holds.faces});
   std::mt19937 random(8);
   std::uniform_real_distribution<double> speed(-50.0, 50.0);
   std::vector<Vec3> v(model.reference.size());
