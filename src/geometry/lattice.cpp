@@ -126,12 +126,17 @@ Lattice fillTetLattice(const Discretisation& tets) {
     lo = lo.cwiseMin(x);
     hi = hi.cwiseMax(x);
   }
+  // As a box's (fillLattice): a whole number of elements across the bounding box along each axis, as
+  // near the size as fits, so that a mesh of a box is filled to its faces exactly (a symmetry plane or
+  // a roller there then mirrors a whole element).
   std::array<int, 3> n{};
+  Vec3 cell;
   for (int a = 0; a < 3; ++a) {
-    n[a] = std::max(1, static_cast<int>(std::ceil((hi[a] - lo[a]) / size - 1e-9)));
+    n[a] = std::max(1, static_cast<int>(std::lround((hi[a] - lo[a]) / size)));
     if (n[a] < 2)
       throw InputError(fmt::format("the mesh is {:.4g} mm across along {}, less than two elements of {:.4g} mm",
                                    1e3 * (hi[a] - lo[a]), "xyz"[a], 1e3 * size));
+    cell[a] = (hi[a] - lo[a]) / n[a];
   }
   KESSLER_VERIFY(static_cast<double>(n[0]) * n[1] * n[2] < static_cast<double>(std::numeric_limits<LocalIndex>::max()),
                  "a lattice of {} x {} x {} elements exceeds 32-bit indices", n[0], n[1], n[2]);
@@ -156,28 +161,29 @@ Lattice fillTetLattice(const Discretisation& tets) {
     const Mat3 inverse = edges.inverse();
     std::array<int, 3> first{}, last{};
     for (int d = 0; d < 3; ++d) {
-      first[d] = std::max(0, static_cast<int>(std::ceil((tlo[d] - lo[d]) / size - 0.5 - 1e-9)));
-      last[d] = std::min(n[d] - 1, static_cast<int>(std::floor((thi[d] - lo[d]) / size - 0.5 + 1e-9)));
+      first[d] = std::max(0, static_cast<int>(std::ceil((tlo[d] - lo[d]) / cell[d] - 0.5 - 1e-9)));
+      last[d] = std::min(n[d] - 1, static_cast<int>(std::floor((thi[d] - lo[d]) / cell[d] - 0.5 + 1e-9)));
     }
     std::array<int, 3> i{};
     for (i[2] = first[2]; i[2] <= last[2]; ++i[2])
       for (i[1] = first[1]; i[1] <= last[1]; ++i[1])
         for (i[0] = first[0]; i[0] <= last[0]; ++i[0]) {
-          const Vec3 centroid = lo + size * (Vec3(i[0], i[1], i[2]) + Vec3::Constant(0.5));
+          const Vec3 centroid = lo + cell.cwiseProduct(Vec3(i[0], i[1], i[2]) + Vec3::Constant(0.5));
           const Vec3 l = inverse * (centroid - a);
           constexpr double eps = 1e-9;
           if (l.minCoeff() >= -eps && l.sum() <= 1.0 + eps) inside[flat(i)] = 1;
         }
   }
-  Lattice lattice = fill(lo, Vec3::Constant(size), n, [&](const Vec3& centroid) {
+  Lattice lattice = fill(lo, cell, n, [&](const Vec3& centroid) {
     std::array<int, 3> i{};
-    for (int d = 0; d < 3; ++d) i[d] = static_cast<int>(std::floor((centroid[d] - lo[d]) / size));
+    for (int d = 0; d < 3; ++d)
+      i[d] = std::clamp(static_cast<int>(std::floor((centroid[d] - lo[d]) / cell[d])), 0, n[d] - 1);
     return inside[flat(i)] != 0;
   });
   Discretisation& d = lattice.particles;
   if (d.points.empty())
     throw InputError(fmt::format("no element of {:.4g} mm has its centre inside the mesh", 1e3 * size));
-  const double scale = volume / (static_cast<double>(d.points.size()) * size * size * size);
+  const double scale = volume / (static_cast<double>(d.points.size()) * cell.prod());
   for (double& v : d.volumes) v *= scale;
   return lattice;
 }

@@ -36,10 +36,11 @@ struct Lattice {
 Lattice fillLattice(const Shape& shape, double size, const std::vector<int>& symmetry_axes);
 
 // A tet mesh (a mesh file, or a verification problem's unstructured body; already clipped to its
-// symmetry planes) filled with cubes: the elements whose centroid lies in a tetrahedron, with the
+// symmetry planes) filled with elements: those whose centroid lies in a tetrahedron, of about the
 // edge the tets' particles had, the cube root of the mesh's volume per tet (so about as many
-// particles), from the corner of the nodes' bounding box. Each particle's volume is scaled so that
-// the particles hold the mesh's volume. Throws InputError for a mesh without tetrahedra's faces, or
+// particles), a whole number of them across the nodes' bounding box along each axis (as a box's: the
+// elements slightly oblong, a box-shaped mesh filled to its faces). Each particle's volume is scaled
+// so that the particles hold the mesh's volume. Throws InputError for a mesh without tetrahedra's faces, or
 // whose filling is less than two elements across along an axis.
 Lattice fillTetLattice(const Discretisation& tets);
 

@@ -64,26 +64,25 @@ TEST(Lattice, StructuredBoxHasOneParticlePerCell) {
 
 // A tet mesh filled with cubes: about one cube per tet, each centroid inside the meshed box, the
 // elements from the box's corner, the mesh's volume held; a bare particle set is refused.
-TEST(Lattice, TetMeshIsFilledWithCubesInsideIt) {
+TEST(Lattice, TetMeshIsFilledWithElementsInsideIt) {
   const Box box{Vec3(0, 0, 0), Vec3(4e-3, 3e-3, 6e-3)};
   const Discretisation tets = discretise(structuredBoxMesh(box, {4, 3, 6}));  // 6 Kuhn tets per cell
   const Lattice lattice = fillTetLattice(tets);
   const Discretisation& d = lattice.particles;
+  // A whole number of elements across the box along each axis, as near the tets' spacing as fits:
+  // the box filled to its faces, each element whole (no volume scaled).
   const double size = std::cbrt(volume(box) / static_cast<double>(tets.points.size()));
-  EXPECT_NEAR(lattice.cell.x(), size, 1e-15);
+  const Vec3 extent = box.max - box.min;
+  for (int a = 0; a < 3; ++a) {
+    EXPECT_EQ(lattice.count[a], std::lround(extent[a] / size));
+    EXPECT_NEAR(lattice.cell[a] * lattice.count[a], extent[a], 1e-15);
+  }
   EXPECT_EQ(lattice.origin, box.min);
-  // Every element whose centroid is inside the box, and no other: the box is convex and its tets
-  // tile it, so the count is the centroids inside.
-  long expected = 0;
-  for (int k = 0; k < lattice.count[2]; ++k)
-    for (int j = 0; j < lattice.count[1]; ++j)
-      for (int i = 0; i < lattice.count[0]; ++i) {
-        const Vec3 c = box.min + size * (Vec3(i, j, k) + Vec3::Constant(0.5));
-        expected += (c.array() <= box.max.array()).all() ? 1 : 0;
-      }
-  EXPECT_EQ(static_cast<long>(d.points.size()), expected);
+  EXPECT_EQ(static_cast<long>(d.points.size()),
+            static_cast<long>(lattice.count[0]) * lattice.count[1] * lattice.count[2]);
   for (const Vec3& x : d.points)
     EXPECT_TRUE((x.array() >= box.min.array()).all() && (x.array() <= box.max.array()).all());
+  for (const double v : d.volumes) EXPECT_NEAR(v, lattice.cell.prod(), 1e-12 * lattice.cell.prod());
   EXPECT_NEAR(total(d.volumes), volume(box), 1e-12 * volume(box));
   EXPECT_GT(static_cast<double>(d.points.size()), 0.5 * static_cast<double>(tets.points.size()));
   EXPECT_LT(static_cast<double>(d.points.size()), 1.5 * static_cast<double>(tets.points.size()));
