@@ -158,6 +158,7 @@ class Hdf5StateReader final : public StateReader {
     if (shape.empty()) h5_.fail(fmt::format("use '{}': it is not an array", name));
     return shape[0];
   }
+  bool has(const std::string& name) const override { return h5_.has(name); }
   void array(const std::string& name, std::vector<double>& values, std::size_t count) const override {
     readArray(h5_, name, values, count);
   }

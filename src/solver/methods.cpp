@@ -74,6 +74,7 @@ std::unique_ptr<Method> makeMethod(const Problem& problem, ParticleState&& resto
     model.coefficient_x.resize(n, Vec3::Zero());
     model.coefficient_v.resize(n, Vec3::Zero());
     model.cell_volume.resize(n, 0.0);
+    model.element.resize(n, {-1, -1, -1});
     return std::make_unique<rkpm::RkpmMethod>(std::move(model), rkpm::settingsFor(problem));
   }
   otm::Model model;

@@ -34,6 +34,8 @@ class StateReader {
   virtual std::int64_t intScalar(const std::string& name) const = 0;
   // Entries of the array `name` (its first dimension).
   virtual std::size_t length(const std::string& name) const = 0;
+  // Whether the file holds the array `name` (one that an older writer did not write).
+  virtual bool has(const std::string& name) const = 0;
   // Reads exactly `count` entries into `values`.
   virtual void array(const std::string& name, std::vector<double>& values, std::size_t count) const = 0;
   virtual void array(const std::string& name, std::vector<std::int32_t>& values, std::size_t count) const = 0;

@@ -5,6 +5,7 @@
 #include "solver/common/mirror.hpp"
 #include "solver/common/stable_step.hpp"
 #include "solver/common/viscosity_limiter.hpp"
+#include "solver/rkpm/surface.hpp"
 #include "solver/rkpm/wall_contact.hpp"
 
 #include <fmt/format.h>
@@ -101,6 +102,12 @@ void Integrator::prepare() {
   gap_.resize(n);
   for (std::size_t p = 0; p < n; ++p) gap_[p] = 0.5 * points.spacing0[p];
   contact_heat_.assign(n, 0.0);
+  // Bodies meet where they have surfaces (several lattice bodies); the surfaces follow the debris
+  // where the particles' lattice elements are known (a checkpoint older than them keeps its own).
+  sliding_ = !model_.surface.empty();
+  rebuilds_ =
+      std::any_of(model_.element.begin(), model_.element.end(), [](const std::array<int, 3>& e) { return e[0] >= 0; });
+  surface_debris_ = -1;
 }
 
 void Integrator::initialise() {
@@ -146,7 +153,7 @@ void Integrator::step() {
       ScopedPhase phase(timers_, "point update");
       kick(0.5 * (clock_.dt_last + dt), dt);
     }
-    if (!model_.surface.empty()) {
+    if (sliding_) {
       ScopedPhase phase(timers_, "contact");
       slide(dt);
     }
@@ -200,8 +207,18 @@ constexpr int contact_passes = 8;  // at most, per step (Integrator::slide)
 void Integrator::slide(double dt) {
   const PointStore& points = model_.points;
   const LocalIndex n = points.owned;
-  // The surface now: a triangle of debris, or stretched beyond three spacings (its particles have
-  // parted: the surface is torn there), is not surface.
+  // The bodies' surfaces over the particles that are not debris, built again whenever more have left
+  // as debris (a pure function of which have, so a restored run builds what the run it continues
+  // had): the particles beneath an eroded surface become surface, and meet the other bodies.
+  LocalIndex released = 0;
+  for (LocalIndex p = 0; p < n; ++p) released += points.debris(p) ? 1 : 0;
+  if (released != surface_debris_ && rebuilds_) {
+    surface_debris_ = released;
+    rebuildSurface();
+  }
+  // The surface now: a triangle stretched beyond three spacings (its particles have parted: the
+  // surface is torn there) is not surface, nor one with a debris vertex (a surface a checkpoint kept
+  // without its elements, which is not built again).
   surface_.triangles.clear();
   surface_.slaves.clear();
   for (const auto& t : model_.surface) {
@@ -217,6 +234,9 @@ void Integrator::slide(double dt) {
     surface_.triangles.push_back(t);
     surface_.slaves.insert(surface_.slaves.end(), t.begin(), t.end());
   }
+  // Debris meets the bodies as matter: each debris particle is a slave of every other body's surface.
+  for (LocalIndex p = 0; p < n; ++p)
+    if (points.debris(p)) surface_.slaves.push_back(p);
   std::sort(surface_.slaves.begin(), surface_.slaves.end());
   surface_.slaves.erase(std::unique(surface_.slaves.begin(), surface_.slaves.end()), surface_.slaves.end());
   std::fill(contact_heat_.begin(), contact_heat_.end(), 0.0);
@@ -278,6 +298,19 @@ void Integrator::slide(double dt) {
   double heat = 0.0;
   for (const double q : contact_heat_) heat += q;
   contact_energy_ += heat;
+}
+
+void Integrator::rebuildSurface() {
+  model_.surface.clear();
+  const PointStore& points = model_.points;
+  std::vector<LocalIndex> present;
+  for (const IndexRange& range : body_points_) {
+    present.clear();
+    for (LocalIndex p = range.begin; p < range.end; ++p)
+      if (!points.debris(p) && model_.element[static_cast<std::size_t>(p)][0] >= 0) present.push_back(p);
+    const std::vector<std::array<LocalIndex, 3>> sheet = latticeSurface(model_.element, present);
+    model_.surface.insert(model_.surface.end(), sheet.begin(), sheet.end());
+  }
 }
 
 void Integrator::deform(double dt) {

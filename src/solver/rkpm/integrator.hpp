@@ -66,6 +66,7 @@ class Integrator {
   void prepare();
   void kick(double dt_kick, double dt);
   void slide(double dt);
+  void rebuildSurface();
   void deform(double dt);
   void updateMaterials(double dt);
   void place();
@@ -97,6 +98,9 @@ class Integrator {
   SlidingContact contact_;
   std::vector<double> gap_, contact_heat_;
   double contact_energy_ = 0.0;
+  // How many particles were debris when model_.surface was last built (-1: build it at the first step).
+  LocalIndex surface_debris_ = -1;
+  bool sliding_ = false, rebuilds_ = false;
 };
 
 }  // namespace kessler::rkpm

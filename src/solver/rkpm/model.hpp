@@ -28,8 +28,12 @@ struct Model : ParticleState {
   std::vector<double> cell_volume;  // each particle's cell (its nodal integration domain), m^3
   std::vector<CellFace> faces;      // the cells' faces, each once
   // The bodies' surfaces for the sliding contact between them (solver/rkpm/surface.hpp): triangles
-  // of particles, counter-clockwise seen from outside; none for a single body.
+  // of particles, counter-clockwise seen from outside, over the particles that are not debris; none
+  // for a single body.
   std::vector<std::array<LocalIndex, 3>> surface;
+  // Each particle's lattice element (i, j, k) in its body, the surface's source; {-1, -1, -1} for a
+  // tet mesh's particle.
+  std::vector<std::array<int, 3>> element;
 };
 
 }  // namespace kessler::rkpm

@@ -78,6 +78,9 @@ void RkpmMethod::save(StateWriter& out) const {
   for (const auto& t : model_.surface) surface.insert(surface.end(), t.begin(), t.end());
   out.scalar("rkpm_surface_triangles", static_cast<std::int64_t>(model_.surface.size()));
   out.array("/rkpm/surface", surface);
+  std::vector<std::int32_t> element;
+  for (const std::array<int, 3>& e : model_.element) element.insert(element.end(), e.begin(), e.end());
+  out.array("/rkpm/element", element);
 }
 
 void RkpmMethod::load(const StateReader& in) {
@@ -113,6 +116,14 @@ void RkpmMethod::load(const StateReader& in) {
         in.fail(fmt::format("/rkpm/surface: triangle {} names particle {} of {}", t, p, n));
       model_.surface[t][v] = static_cast<LocalIndex>(p);
     }
+  // The lattice elements the surface is built from as particles leave as debris. A checkpoint written
+  // before they were kept (2026-12-01) has none: its run goes on with the surface it saved.
+  model_.element.assign(n, {-1, -1, -1});
+  if (in.has("/rkpm/element")) {
+    std::vector<std::int32_t> element;
+    in.array("/rkpm/element", element, 3 * n);
+    for (std::size_t p = 0; p < n; ++p) model_.element[p] = {element[3 * p], element[3 * p + 1], element[3 * p + 2]};
+  }
   integrator_.restore(Clock{in.doubleScalar("rkpm_time"), in.intScalar("rkpm_steps"), in.doubleScalar("rkpm_dt_last"),
                             in.doubleScalar("rkpm_dt_next"), in.doubleScalar("rkpm_dt_initial")},
                       in.doubleScalar("rkpm_contact_energy"));

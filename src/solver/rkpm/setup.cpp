@@ -78,6 +78,10 @@ Model buildModel(const Problem& problem) {
       latticeFaces(made, first, model.faces);
     else
       tetFaces(made, first, model.faces);
+    if (lattice)
+      model.element.insert(model.element.end(), made.element.begin(), made.element.end());
+    else
+      model.element.resize(points.x.size(), {-1, -1, -1});
     if (problem.bodies.size() > 1) {
       if (!lattice)
         throw InputError(fmt::format(
@@ -85,7 +89,9 @@ Model buildModel(const Problem& problem) {
             "body has (a shape or a structured box); a tet mesh's particles have none yet (give solver.method: otm "
             "or sph)",
             setup.name));
-      const std::vector<std::array<LocalIndex, 3>> sheet = latticeSurface(made.element, first);
+      std::vector<LocalIndex> all(n);
+      for (std::size_t i = 0; i < n; ++i) all[i] = first + static_cast<LocalIndex>(i);
+      const std::vector<std::array<LocalIndex, 3>> sheet = latticeSurface(model.element, all);
       model.surface.insert(model.surface.end(), sheet.begin(), sheet.end());
     }
     for (const LocalIndex i : fixedParticles(setup, made)) {
