@@ -27,7 +27,8 @@ std::vector<AxisImage> axisImages(double lo, double hi, double reach) {
   const bool has_lo = std::isfinite(lo), has_hi = std::isfinite(hi);
   if (has_lo && has_hi) {
     const double w = hi - lo;
-    const int slabs = static_cast<int>(std::floor(reach / w)) + 1;
+    // (More than 127 slabs a side is more than 256 images: refused by the caller, counted here.)
+    const int slabs = static_cast<int>(std::min(std::floor(reach / w), 127.0)) + 1;
     for (int n = 1; n <= slabs; ++n)
       for (const int k : {-n, n}) {
         AxisImage i;
@@ -62,6 +63,8 @@ bool MirrorBox::any() const {
 Mirrors::Mirrors() : images_(1) {}
 
 Mirrors::Mirrors(const MirrorBox& box, double reach) : box_(box), reach_(reach) {
+  KESSLER_VERIFY(std::isfinite(reach) && reach >= 0.0, "mirror planes: the images' reach must be finite, got {}",
+                 reach);
   std::array<std::vector<AxisImage>, 3> axes;
   std::size_t total = 1;
   for (int a = 0; a < 3; ++a) {

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <set>
 #include <vector>
@@ -113,6 +114,8 @@ TEST(Mirrors, RefuseTooManyImages) {
   }
   EXPECT_NO_THROW(Mirrors(box, 1e-3));
   EXPECT_THROW(Mirrors(box, 1e-2), Error);
+  EXPECT_THROW(Mirrors(box, 1e300), Error);  // refused, not overflowed
+  EXPECT_THROW(Mirrors(box, std::nan("")), Error);
 }
 
 TEST(Mirrors, ProblemPlanesMakeTheBox) {
