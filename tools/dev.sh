@@ -106,7 +106,13 @@ tsan() {
   build-tsan/src/app/kessler run examples/whipple.yaml --out build-tsan/whipple-short --threads 2 --quiet \
     --set solver.end_time="1.5 us" --set output.every="0.5 us" --set bodies.0.mesh_size="0.7 mm" \
     --set bodies.1.mesh_size="0.8 mm" --set bodies.2.mesh_size="1.94 mm"
-  echo "tsan: thread-determinism (OTM and SPH), SPH's flyer plate and a 1.5 us whipple impact on 2 threads ran without a race"
+  # RKPM: its kernels, and its contact with a surface built again as the rod erodes (21 g of debris).
+  build-tsan/src/app/kessler verify --method rkpm thread-determinism
+  build-tsan/src/app/kessler run examples/rod-steel-plate.yaml --out build-tsan/rod-short --threads 2 --quiet \
+    --set solver.method=rkpm --set solver.end_time="15 us" --set bodies.0.mesh_size="3 mm" \
+    --set bodies.1.mesh_size="3 mm" --set "bodies.0.velocity=[0, 0.26048 km/s, -1.47722 km/s]"
+  echo "tsan: thread-determinism (OTM, SPH and RKPM), SPH's flyer plate, a 1.5 us whipple impact and a 15 us" \
+    "RKPM rod impact on 2 threads ran without a race"
 }
 
 fuzz() {
