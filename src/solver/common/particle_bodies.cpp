@@ -18,45 +18,23 @@ BodyParticles fromLattice(geometry::Lattice&& lattice) {
 }  // namespace
 
 BodyParticles particlesOf(const BodySetup& setup, const std::vector<int>& symmetry_axes, const char* method) {
-  if (const auto* structured = std::get_if<geometry::StructuredBox>(&setup.mesh)) {
-    try {
+  try {
+    if (const auto* structured = std::get_if<geometry::StructuredBox>(&setup.mesh))
       return fromLattice(geometry::fillBoxLattice(structured->box, structured->cells));
-    } catch (const InputError& e) {
-      throw InputError(fmt::format("body '{}': {}", setup.name, e.what()));
-    }
-  }
-  const auto* request = std::get_if<geometry::MeshRequest>(&setup.mesh);
-  if (request == nullptr || std::holds_alternative<geometry::MeshFile>(request->shape)) {
-    BodyParticles tets;
+    const auto* request = std::get_if<geometry::MeshRequest>(&setup.mesh);
     if (request == nullptr) {
-      tets.particles = std::get<geometry::Discretisation>(setup.mesh);
-    } else {
+      const auto& given = std::get<geometry::Discretisation>(setup.mesh);
+      if (given.faces.empty()) return {given, {}, std::vector<std::array<int, 3>>(given.points.size(), {-1, -1, -1})};
+      return fromLattice(geometry::fillTetLattice(given));
+    }
+    if (std::holds_alternative<geometry::MeshFile>(request->shape)) {
       geometry::MeshRequest clipped = *request;
       clipped.symmetry_axes = symmetry_axes;
-      tets.particles = geometry::discretise(geometry::meshShape(clipped));
+      return fromLattice(geometry::fillTetLattice(geometry::discretise(geometry::meshShape(clipped))));
     }
-    // A particle's spacing is the cube root of its volume (a tet's mean edge, OTM's support size,
-    // is about twice the distance between barycentres).
-    geometry::Discretisation& d = tets.particles;
-    for (std::size_t p = 0; p < d.points.size(); ++p) d.spacings[p] = std::cbrt(d.volumes[p]);
-    tets.element.assign(d.points.size(), {-1, -1, -1});
-    return tets;
-  }
-  if (request->refine)
-    throw InputError(
-        fmt::format("body '{}': {} fills a body with one particle size; refine is OTM's", setup.name, method));
-  try {
+    if (request->refine)
+      throw InputError(fmt::format("{} fills a body with one particle size; refine is OTM's", method));
     return fromLattice(geometry::fillLattice(request->shape, request->mesh_size, symmetry_axes));
-  } catch (const InputError& e) {
-    throw InputError(fmt::format("body '{}': {}", setup.name, e.what()));
-  }
-}
-
-BodyParticles latticeParticlesOf(const BodySetup& setup, const std::vector<int>& symmetry_axes, const char* method) {
-  BodyParticles made = particlesOf(setup, symmetry_axes, method);
-  if (made.frame.cell.squaredNorm() > 0.0 || made.particles.faces.empty()) return made;
-  try {
-    return fromLattice(geometry::fillTetLattice(made.particles));
   } catch (const InputError& e) {
     throw InputError(fmt::format("body '{}': {}", setup.name, e.what()));
   }

@@ -19,8 +19,8 @@
 // surface normal to that component: the velocity is held where the cells' smoothed gradients read
 // it. Held at the particles, half a cell inside, the faces were free to move through the plane: a
 // lattice column under the hugoniot-3d shock moved sideways at up to 2 km/s (0.46 km/s held on the
-// faces), and pressure came out 12% low (1.3%). On a tet mesh the rollers still leak where two
-// meet (docs/validation.md, "RKPM").
+// faces), and pressure came out 12% low (1.3%); the rollers are mirror planes now (docs/validation.md,
+// "RKPM").
 #include "solver/rkpm/kernels.hpp"
 #include "solver/rkpm/model.hpp"
 

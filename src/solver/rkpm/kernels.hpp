@@ -19,9 +19,9 @@
 
 namespace kessler::rkpm {
 
-// A face of a particle's cell (its nodal integration domain: a lattice element, or a tetrahedron
-// around its barycentre): its area vector out of the cell of `inner`, and its centroid; `outer` is the
-// particle whose cell lies on the other side, -1 on the body's surface.
+// A face of a particle's cell (its nodal integration domain, its lattice element; the smoothed
+// gradients hold for any closed cell): its area vector out of the cell of `inner`, and its centroid;
+// `outer` is the particle whose cell lies on the other side, -1 on the body's surface.
 struct CellFace {
   Vec3 area = Vec3::Zero();
   Vec3 centroid = Vec3::Zero();

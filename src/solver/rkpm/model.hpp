@@ -31,8 +31,8 @@ struct Model : ParticleState {
   // of particles, counter-clockwise seen from outside, over the particles that are not debris; none
   // for a single body.
   std::vector<std::array<LocalIndex, 3>> surface;
-  // Each particle's lattice element (i, j, k) in its body, the surface's source; {-1, -1, -1} for a
-  // tet mesh's particle.
+  // Each particle's lattice element (i, j, k) in its body, the surface's source ({-1, -1, -1} for a
+  // particle of a checkpoint that did not save them).
   std::vector<std::array<int, 3>> element;
 };
 

@@ -1,7 +1,7 @@
 #pragma once
 // RKPM's particles for a problem (docs/theory.md §12): each body's particles as
-// solver/common/particle_bodies.hpp makes them, with their cells: a lattice's elements, or a tet
-// mesh's tetrahedra.
+// solver/common/particle_bodies.hpp makes them (a lattice, a tet mesh filled with cubes), with their
+// cells: the lattice's elements.
 #include "solver/common/problem.hpp"
 #include "solver/rkpm/model.hpp"
 
@@ -12,9 +12,8 @@ Model buildModel(const Problem& problem);
 
 // The particles a plane constraint holds: with an unbounded tolerance every particle (of its body,
 // if it names one); otherwise the particles whose cells have a face of the body's surface in the
-// plane, within the tolerance: a lattice's first layer, a tet mesh's particles whose tetrahedra
-// have a face there. The plane holds the velocity on those faces (held_at_surface), where the
-// smoothed gradients of the cells read it, not at the particles half a cell inside.
+// plane, within the tolerance: the lattice's first layer. The plane holds the velocity on those faces
+// (held_at_surface), where the smoothed gradients of the cells read it, not at the particles half a cell inside.
 std::vector<LocalIndex> particlesOnPlane(const Model& model, const PlaneConstraint& plane);
 
 }  // namespace kessler::rkpm

@@ -37,7 +37,7 @@ Model buildModel(const Problem& problem) {
   Model model;
   PointStore& points = model.points;
   for (const BodySetup& setup : problem.bodies) {
-    const BodyParticles made = latticeParticlesOf(setup, problem.symmetry_axes, "SPH");
+    const BodyParticles made = particlesOf(setup, problem.symmetry_axes, "SPH");
     model.lattices.push_back(made.frame);
     model.element.insert(model.element.end(), made.element.begin(), made.element.end());
     const auto first = static_cast<std::size_t>(addParticleBody(model, setup, made));
