@@ -208,15 +208,26 @@ SlidingReport SlidingContact::apply(const ContactSurface& surface, const Sliding
       }
       if (m < 0 || nearest > longest) continue;
       Vec3 normal = Vec3::Zero();
-      bool inside = true;
+      bool inside = true, beneath = true;
       for (const Near& item : near) {
         const auto& v = triangles[static_cast<std::size_t>(item.triangle)];
         if (std::find(v.begin(), v.end(), m) == v.end()) continue;
         inside = inside && item.depth < 0.0;
+        beneath = beneath && (ys - y(v[0])).dot(item.normal) < 0.0;
         normal += item.normal;
       }
       if (!inside || !(normal.norm() > 0.0)) continue;
       normal.normalize();
+      // With gaps, the surface a slave meets beyond an edge or vertex is rounded: the planes pushed
+      // out by the gaps meet in a square corner, which a particle ahead of a body's edge (a plate's,
+      // beside a block sliding on it) lies inside without touching. Outside the body's own planes the
+      // slave meets the vertex as a particle meets a particle, within the two gaps, along the line
+      // between them.
+      if (!c.gap.empty() && !beneath) {
+        const Vec3 apart = ys - y(m);
+        if (!(apart.norm() < c.gap[s] + c.gap[m])) continue;
+        normal = apart.normalized();
+      }
       const double vs = c.v[s].dot(normal), vm = c.v[m].dot(normal);
       if (!(vs - vm < 0.0)) continue;
       const double inverse_m = inverseMass(c, m);
