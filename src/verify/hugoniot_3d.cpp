@@ -156,8 +156,8 @@ Hugoniot3dResult runHugoniot3d(double mesh_size, MethodSettings settings, bool o
   r.reference_pressure = eos.density * r.reference_shock_speed * r.reference_velocity;
   r.reference_density = eos.density * r.reference_shock_speed / (r.reference_shock_speed - r.reference_velocity);
   r.reference_density0 = eos.density;
-  // The front is measured from when it has crossed 3 mm of material until 12 mm, before the release from the
-  // other half's far end (16 mm, shocked at the same rate) can reach it.
+  // The front is measured from when it has crossed 3 mm of material until 12 mm, before the release
+  // from the other half's far end (16 mm, shocked at the same rate) can reach it.
   const double t1 = 3e-3 / r.reference_shock_speed, t2 = 12e-3 / r.reference_shock_speed;
 
   problem.settings = settings;

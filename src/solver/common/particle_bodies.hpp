@@ -3,8 +3,9 @@
 // a lattice of hexahedral elements with one particle at each centroid (geometry/lattice.hpp). An
 // analytic shape is filled at the deck's mesh_size; a structured box takes one particle per cell; a
 // tet mesh (a mesh file, a verification problem's unstructured slab) is filled with cubes of about
-// its tets' mean volume (about as many particles as it has tets). SPH's finite-element reconstruction needs the
-// elements, and RKPM integrates over them and builds its contact surface from them.
+// its tets' mean volume (about as many particles as it has tets). SPH's finite-element
+// reconstruction needs the elements, and RKPM integrates over them and builds its contact surface
+// from them.
 #include "geometry/mesh.hpp"
 #include "particles/store.hpp"
 #include "solver/common/particle_state.hpp"
