@@ -47,6 +47,15 @@ LocalIndex DebrisRelease::apply(ParticleState& model, const Share& share) {
     }
   const std::vector<Member> releases = everyRanks(mine, share);
   if (releases.empty()) return 0;
+  if (!exchange_) {
+    for (LocalIndex p = 0; p < np; ++p)
+      if (share.own(p) && points.failed(p) && points.stress[p].trace() == 0.0) {
+        points.carrier[p] = -1;
+        points.stress[p].setZero();
+        points.viscous_pressure[p] = 0.0;
+      }
+    return static_cast<LocalIndex>(mine.size());
+  }
   std::vector<Member> members;
   std::vector<LocalIndex> local;
   collect(points, share, releases, members, local);

@@ -18,6 +18,11 @@
 // The releases run one after another in id order, each ball's sums in id order, over a compact copy
 // of the points the balls hold. A distributed run gathers that copy from every rank, so every rank
 // computes the same releases in the same order as one process (docs/parallel.md).
+//
+// A method whose point velocities are not its own but interpolated from its unknowns every step
+// (RKPM: from the coefficients, docs/theory.md §12) releases without the exchange: there is no
+// transfer noise to take off, and a velocity the release gave a point would be overwritten while the
+// heat booked for it stayed, energy made from nothing.
 #include "search/cell_list.hpp"
 #include "solver/common/own_sums.hpp"
 #include "solver/common/particle_state.hpp"
@@ -29,8 +34,12 @@ namespace kessler {
 
 class DebrisRelease {
  public:
+  // Whether the points' velocities are the method's own (OTM's, after the transfer from the nodes;
+  // SPH's) or interpolated from its unknowns each step (RKPM's).
+  enum class Velocities { own, interpolated };
   // erosion_radius: the radius of the ball B_eps as a multiple of the point spacing.
-  explicit DebrisRelease(double erosion_radius) : erosion_radius_(erosion_radius) {}
+  explicit DebrisRelease(double erosion_radius, Velocities velocities = Velocities::own)
+      : erosion_radius_(erosion_radius), exchange_(velocities == Velocities::own) {}
   // Releases every failed point whose stress is zero (it bears no compression), in id order, so
   // that the result depends neither on the thread count nor, with `share` (a distributed run's own
   // points and ranks; collective), on the partition. Returns the number of own points released.
@@ -55,6 +64,7 @@ class DebrisRelease {
   void release(std::size_t k);
 
   double erosion_radius_;
+  bool exchange_ = true;  // the velocity exchange with the ball (Velocities::own)
   std::vector<Member> members_;
   CellList cells_;
   std::vector<Vec3> x_;

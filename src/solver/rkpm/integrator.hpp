@@ -65,7 +65,7 @@ class Integrator {
  private:
   void prepare();
   void kick(double dt_kick, double dt);
-  void slide(double dt);
+  void slide(double dt, double dt_kick);
   void rebuildSurface();
   void deform(double dt);
   void updateMaterials(double dt);
@@ -89,10 +89,12 @@ class Integrator {
   std::vector<Mat3> piola_;          // V0_J P_J
   std::vector<Vec3> du_;             // the coefficients' move over the step
   // The sliding contact between bodies: its surface, each particle's gap (half its spacing: its
-  // cell's reach beyond it), the energy it took in a step per particle, and in all; the surface
+  // cell's reach beyond it), the exchanges' own estimate of the heat per particle (which the
+  // contact writes; not booked, Integrator::slide), the energy it took in all; the surface
   // particles' velocities and moves a pass gives it, those before the pass, and a mark per particle
   // (the particles a pass moved).
   std::vector<Vec3> particle_v_, particle_du_, before_;
+  std::vector<Vec3> coefficient_before_;  // the coefficients' velocities before the contact's passes
   std::vector<std::uint8_t> moved_mark_;
   ContactSurface surface_;
   SlidingContact contact_;

@@ -102,5 +102,33 @@ TEST(DebrisRelease, ReleasesOnlyTheFailedPointsThatBearNothing) {
   for (LocalIndex p = ranges[wall_body].begin; p < ranges[wall_body].end; ++p) EXPECT_FALSE(points.broken[p]);
 }
 
+// A method whose particle velocities are interpolated from its unknowns (RKPM) releases the same
+// points without the exchange: no velocity or energy changes, where the exchange changes both.
+TEST(DebrisRelease, InterpolatedVelocitiesAreReleasedWithoutTheExchange) {
+  Model own = blockOntoWall();
+  const std::vector<IndexRange> ranges = bodyRanges(own.points.body, own.points.size(), own.bodies.size());
+  const IndexRange& block = ranges[block_body];
+  for (LocalIndex p = block.begin; p < block.end; ++p) {
+    own.points.fail(p);
+    own.points.v[p] = Vec3(0.0, 0.0, -speed * (1.0 + 0.1 * ((p * 7) % 5)));  // rough: the exchange acts
+    if ((p - block.begin) % 2 == 0) own.points.stress[p] = -1e9 * Mat3::Identity();
+  }
+  const Model start = own;
+  Model interpolated = own;
+  const Settings settings;
+  DebrisRelease(settings.erosion_radius).apply(own);
+  const LocalIndex released =
+      DebrisRelease(settings.erosion_radius, DebrisRelease::Velocities::interpolated).apply(interpolated);
+  EXPECT_EQ(released, (block.end - block.begin) / 2);
+  LocalIndex changed = 0;
+  for (LocalIndex p = 0; p < own.points.size(); ++p) {
+    EXPECT_EQ(interpolated.points.debris(p), own.points.debris(p)) << "point " << p;
+    EXPECT_EQ(interpolated.points.v[p], start.points.v[p]) << "point " << p;
+    EXPECT_EQ(interpolated.points.energy[p], start.points.energy[p]) << "point " << p;
+    changed += own.points.v[p] != interpolated.points.v[p] ? 1 : 0;
+  }
+  EXPECT_GT(changed, 0) << "the exchange changed nothing: the test shows nothing";
+}
+
 }  // namespace
 }  // namespace kessler::otm

@@ -541,6 +541,7 @@ namespace {
 struct RkpmSlide {
   Vec3 p0 = Vec3::Zero(), block = Vec3::Zero(), plate = Vec3::Zero();
   double deepest = 0.0;
+  double energy0 = 0.0, energy = 0.0;  // the total (the contact's heat included) at the start and end
 };
 
 RkpmSlide slideBlock(const Vec3& velocity, double friction, bool plate_held, double lift, double end_time) {
@@ -590,6 +591,7 @@ RkpmSlide slideBlock(const Vec3& velocity, double friction, bool plate_held, dou
   EXPECT_EQ(top.size(), 15u * 7u * 2u) << "the plate's top face: 16 x 8 particles, 15 x 7 squares, two triangles each";
   RkpmSlide r;
   r.p0 = momentum(0);
+  r.energy0 = method->energies().total();
   while (!method->finished()) {
     method->step();
     // Each block particle against the triangle nearest to it that it lies over.
@@ -613,6 +615,7 @@ RkpmSlide slideBlock(const Vec3& velocity, double friction, bool plate_held, dou
   }
   r.block = momentum(0);
   r.plate = momentum(1);
+  r.energy = method->energies().total();
   return r;
 }
 
@@ -638,6 +641,23 @@ TEST(RkpmSlidingContact, AnObliqueImpactConservesMomentum) {
     SCOPED_TRACE(friction);
     const RkpmSlide r = slideBlock(Vec3(300, 0, -300), friction, false, 0.2e-3, 3e-6);
     EXPECT_LT((r.block + r.plate - r.p0).norm(), 1e-12 * r.p0.norm());
+  }
+}
+
+// The budget closes with the heat the contact books (docs/theory.md §12, "The contact's energy"),
+// to the 1% of the energy verification: the oblique impact +0.30% and +0.63%, the sliding runs 4e-6
+// and 4e-5. Booked as the exchanges' own estimate (before the twenty-eighth session) the oblique
+// impact grew by 4.8% and 5.6%.
+TEST(RkpmSlidingContact, TheEnergyBudgetClosesWithTheContactsHeat) {
+  for (const double friction : {0.0, 0.3}) {
+    SCOPED_TRACE(friction);
+    const RkpmSlide r = slideBlock(Vec3(300, 0, -300), friction, false, 0.2e-3, 3e-6);
+    EXPECT_LT(std::abs(r.energy / r.energy0 - 1.0), 0.01);
+  }
+  for (const auto& [friction, press] : {std::pair{0.0, -5.0}, std::pair{0.3, -20.0}}) {
+    SCOPED_TRACE(friction);
+    const RkpmSlide r = slideBlock(Vec3(200, 0, press), friction, true, 0.0, 4e-6);
+    EXPECT_LT(std::abs(r.energy / r.energy0 - 1.0), 0.01);
   }
 }
 
