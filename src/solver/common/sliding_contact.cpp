@@ -164,18 +164,10 @@ SlidingReport SlidingContact::apply(const ContactSurface& surface, const Sliding
           for (int i = 0; i < 3; ++i)
             c.v[v[i]] -= freePart(face->weight[i] * inverseMass(c, v[i]) * impulse, c.constrained[v[i]]);
         };
-        // The kinetic energy an exchange took that brought the relative speed from `before` to `after`
-        // along its direction: half to the slave, half to the vertices.
-        const auto heat = [&](double before, double after) {
-          const double q = 0.5 * (before * before - after * after) / w;
-          c.heat[s] += 0.5 * q;
-          for (int i = 0; i < 3; ++i) c.heat[v[i]] += 0.5 * face->weight[i] * q;
-        };
         const double approach = relative().dot(n);
         if (approach < 0.0) {
           const double J = -approach / w;
           push(J * n);
-          heat(approach, 0.0);
           if (friction_ > 0.0) {
             const Vec3 r = relative();
             const Vec3 slip = r - r.dot(n) * n;
@@ -183,7 +175,6 @@ SlidingReport SlidingContact::apply(const ContactSurface& surface, const Sliding
             if (speed > 0.0) {
               const double Jt = std::min(friction_ * J, speed / w);
               push(-Jt / speed * slip);
-              heat(speed, speed - Jt * w);
             }
           }
         }
@@ -236,9 +227,6 @@ SlidingReport SlidingContact::apply(const ContactSurface& surface, const Sliding
       const double mean = (inverse_m * vs + inverse_s * vm) / (inverse_s + inverse_m);
       c.v[s] += freePart((mean - vs) * normal, c.constrained[s]);
       c.v[m] += freePart((mean - vm) * normal, c.constrained[m]);
-      const double q = 0.5 * (vs - vm) * (vs - vm) / (inverse_s + inverse_m);
-      c.heat[s] += 0.5 * q;
-      c.heat[m] += 0.5 * q;
       ++report.edge_contacts;
       if (!report.touching.empty())
         report.touching[static_cast<std::size_t>(c.body[s])] |= std::uint64_t{1} << c.body[m];

@@ -16,14 +16,14 @@
 //   momentum, the slave and its contact point now coinciding.
 // - Coulomb friction: the relative tangential velocity is reduced by an impulse of at most
 //   `friction` times J, at most enough to stop the sliding; without friction it is kept.
-// - The kinetic energy these exchanges take (1/2 J^2 w for the normal one, w = 1/m_s + sum N_i^2/m_i,
-//   and the like for friction) is returned per carrier, half the slave's and half the vertices' (by
-//   N_i); the method decides where it goes (OTM books it apart: docs/theory.md §11).
+// - The energy these inelastic exchanges take is the work of their impulses, which contactHeat below
+//   counts over a step (OTM and RKPM book it apart: docs/theory.md §11).
 // - A slave inside the body beyond an edge or vertex (below the plane of every triangle around its
 //   nearest master vertex, its projection on none of them) exchanges its normal velocity with that
 //   vertex by the momentum-weighted mean, along the mean of those triangles' normals.
 // The slaves are visited in index order, a few times over (a correction moves the vertices that
 // other slaves met), so the result is the same for any thread count.
+#include "core/exact_sum.hpp"
 #include "core/types.hpp"
 
 #include <array>
@@ -41,9 +41,8 @@ struct ContactSurface {
 };
 
 // The carriers a sliding contact moves: positions at the start of the step, the step's displacement
-// and the velocity (both changed), masses, bodies, the components held by a boundary (bit i:
-// component i), which the contact leaves alone, and the kinetic energy the contact took, per
-// carrier (added to, J). `gap`, if given: per carrier, how far its body's surface lies beyond it
+// and the velocity (both changed), masses, bodies, and the components held by a boundary (bit i:
+// component i), which the contact leaves alone. `gap`, if given: per carrier, how far its body's surface lies beyond it
 // (a particle method's: half a spacing; OTM's nodes are on it, and give none); a slave then touches
 // a triangle when its height above it falls below its own gap and the triangle's (by N_i).
 struct SlidingCarriers {
@@ -53,7 +52,6 @@ struct SlidingCarriers {
   std::span<const double> mass;
   std::span<const std::int32_t> body;
   std::span<const std::uint8_t> constrained;
-  std::span<double> heat;
   std::span<const double> gap = {};
 };
 
@@ -84,5 +82,24 @@ class SlidingContact {
   double friction_ = 0.0;
   bool correct_positions_ = true;
 };
+
+// The heat a contact took in a step (docs/theory.md §11, "Energy"): the work of its impulses
+// J_a = m_a (v_a,after - v_a,before) on the carriers, counted as the leapfrog counts a force's work,
+// at the mean of the velocities the step starts and ends with: q = -sum_a J_a . (v_a,start +
+// v_a,after) / 2, `start(a)` carrier a's velocity before the step's kick. (At the velocities just
+// before and after the contact, q would also count the kick a pressed surface takes from its own
+// stress every step, which the contact takes off again and no stress power paid.) Summed exactly
+// over the first `count` carriers, in index order.
+template <class Start>
+double contactHeat(std::span<const double> mass, std::span<const Vec3> before, std::span<const Vec3> after,
+                   LocalIndex count, Start&& start) {
+  ExactSum heat;
+  for (LocalIndex a = 0; a < count; ++a) {
+    const Vec3 change = after[a] - before[a];
+    if (change == Vec3::Zero()) continue;
+    heat.add(-mass[a] * change.dot(0.5 * (start(a) + after[a])));
+  }
+  return heat.value();
+}
 
 }  // namespace kessler

@@ -374,20 +374,18 @@ void Integrator::slide() {
   for (std::size_t a = 0; a < du.size(); ++a) du[a] = increment_[a].du;
   const std::vector<Vec3>& v_before = slide_v_;
   slide_v_.assign(nodes.v.begin(), nodes.v.begin() + nodes.owned);
-  contact_heat_.assign(du.size(), 0.0);
   sliding_report_ = sliding_.apply(
-      surface_, SlidingCarriers{nodes.x, du, nodes.v, nodes.mass, nodes.body, nodes.constrained, contact_heat_},
-      model_.bodies.size());
+      surface_, SlidingCarriers{nodes.x, du, nodes.v, nodes.mass, nodes.body, nodes.constrained}, model_.bodies.size());
   for (std::size_t a = 0; a < du.size(); ++a) {
     increment_[a].du = du[a];
     increment_[a].dv += nodes.v[a] - v_before[a];
   }
-  // The kinetic energy the contact took is booked apart (Energies::stabilisation), not given to the
-  // material: all of it in the one layer of points at the interface (where a shock would spread it
-  // over the material it crosses) made them hot enough to collapse the time step (docs/theory.md §11).
-  ExactSum taken;
-  for (const double q : contact_heat_) taken.add(q);
-  stabilisation_energy_ += taken.value();
+  // The energy the contact took (the work of its impulses, from the step's starting velocity
+  // momentum / mass) is booked apart (Energies::stabilisation), not given to the material: all of it
+  // in the one layer of points at the interface (where a shock would spread it over the material it
+  // crosses) made them hot enough to collapse the time step (docs/theory.md §11).
+  stabilisation_energy_ += contactHeat(nodes.mass, v_before, nodes.v, nodes.owned,
+                                       [&](LocalIndex a) { return Vec3(nodes.momentum[a] / nodes.mass[a]); });
   recordContacts(model_, sliding_report_.touching);
 }
 

@@ -140,7 +140,6 @@ class Integrator {
   SlidingContact sliding_;
   ContactSurface surface_;
   SlidingReport sliding_report_;          // the last step's
-  std::vector<double> contact_heat_;      // per node: the kinetic energy the step's sliding contact took, J
   std::vector<Vec3> slide_du_, slide_v_;  // slide()'s copies of the nodes' displacements and velocities
   std::vector<NodeIncrement> increment_;
   std::vector<double> j_point_;  // det(dF) per point (after averaging)

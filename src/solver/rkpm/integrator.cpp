@@ -102,7 +102,6 @@ void Integrator::prepare() {
   moved_mark_.assign(n, 0);
   gap_.resize(n);
   for (std::size_t p = 0; p < n; ++p) gap_[p] = 0.5 * points.spacing0[p];
-  contact_heat_.assign(n, 0.0);
   // Bodies meet where they have surfaces (several lattice bodies); the surfaces follow the debris
   // where the particles' lattice elements are known (a checkpoint older than them keeps its own).
   sliding_ = !model_.surface.empty();
@@ -205,16 +204,9 @@ constexpr int contact_passes = 8;  // at most, per step (Integrator::slide)
 // particles, at their positions and with their velocities and masses, with velocity exchanges only
 // (no position correction). Each particle's impulse m_K dv_K reaches the coefficients as a force
 // does, through the shape functions: vhat_I += 1 / m_I  sum_K Psi_I(X_K) m_K dv_K, which conserves
-// the linear momentum exactly (the shape functions sum to one). The energy it takes is booked apart,
-// as the work its impulses J_I = m_I (vhat_I,after - vhat_I,before) do on the coefficients by the
-// leapfrog's rule for a force, at the step's mean velocity: q = -sum_I J_I . (vhat_I,start +
-// vhat_I,after) / 2, vhat_start = vhat_before - dt_kick a_I the velocity before the kick
-// (docs/theory.md §12, "Sliding contact"). The fall of the kinetic energy over the passes alone also
-// counts, as heat, the kick a pressed surface takes from its own stress and the contact takes off
-// again every step, which the stress power never paid; and the exchanges' own estimate
-// (SlidingContact's heat, for carriers that are the unknowns, as OTM's nodes are) counts the
-// particles as if each moved alone, where the shape functions spread each impulse over the
-// neighbours.
+// the linear momentum exactly (the shape functions sum to one). The energy it takes is booked apart:
+// the work its impulses did on the coefficients over the passes (contactHeat), from their velocities
+// before the kick, vhat_before - dt_kick a_I (docs/theory.md §12, "The contact's energy").
 void Integrator::slide(double dt, double dt_kick) {
   const PointStore& points = model_.points;
   const LocalIndex n = points.owned;
@@ -250,7 +242,6 @@ void Integrator::slide(double dt, double dt_kick) {
     if (points.debris(p)) surface_.slaves.push_back(p);
   std::sort(surface_.slaves.begin(), surface_.slaves.end());
   surface_.slaves.erase(std::unique(surface_.slaves.begin(), surface_.slaves.end()), surface_.slaves.end());
-  std::fill(contact_heat_.begin(), contact_heat_.end(), 0.0);
   std::copy(model_.coefficient_v.begin(), model_.coefficient_v.end(), coefficient_before_.begin());
   // The contact's impulses reach the particles through the shape functions, which spread each over
   // its neighbours: a particle's velocity after one pass is not yet the one the contact asked for.
@@ -271,8 +262,8 @@ void Integrator::slide(double dt, double dt_kick) {
       particle_v_[k] = before_[k] = at;
       particle_du_[k] = dt * at;
     }
-    const SlidingCarriers carriers{points.x,    particle_du_,       particle_v_,   points.mass,
-                                   points.body, model_.constrained, contact_heat_, gap_};
+    const SlidingCarriers carriers{points.x,    particle_du_,       particle_v_, points.mass,
+                                   points.body, model_.constrained, gap_};
     const SlidingReport report = contact_.apply(surface_, carriers, model_.bodies.size());
     for (std::size_t b = 0; b < touching.size(); ++b) touching[b] |= report.touching[b];
     double total = 0.0;
@@ -298,11 +289,9 @@ void Integrator::slide(double dt, double dt_kick) {
     active.erase(std::unique(active.begin(), active.end()), active.end());
     surface_.slaves = std::move(moved);
   }
-  for (LocalIndex i = 0; i < n; ++i) {
-    const Vec3 change = v[i] - coefficient_before_[i];
-    if (change == Vec3::Zero()) continue;
-    contact_energy_ -= mass_[i] * change.dot(0.5 * (coefficient_before_[i] + v[i]) - 0.5 * dt_kick * acceleration_[i]);
-  }
+  contact_energy_ += contactHeat(mass_, coefficient_before_, v, n, [&](LocalIndex i) {
+    return Vec3(coefficient_before_[i] - dt_kick * acceleration_[i]);
+  });
   collocation_.impose(model_.prescribed_v, v);
 #pragma omp parallel for schedule(static)
   for (LocalIndex i = 0; i < n; ++i) du_[i] = dt * v[i];

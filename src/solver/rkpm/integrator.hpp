@@ -89,8 +89,7 @@ class Integrator {
   std::vector<Mat3> piola_;          // V0_J P_J
   std::vector<Vec3> du_;             // the coefficients' move over the step
   // The sliding contact between bodies: its surface, each particle's gap (half its spacing: its
-  // cell's reach beyond it), the exchanges' own estimate of the heat per particle (which the
-  // contact writes; not booked, Integrator::slide), the energy it took in all; the surface
+  // cell's reach beyond it), the energy it took in all; the surface
   // particles' velocities and moves a pass gives it, those before the pass, and a mark per particle
   // (the particles a pass moved).
   std::vector<Vec3> particle_v_, particle_du_, before_;
@@ -98,7 +97,7 @@ class Integrator {
   std::vector<std::uint8_t> moved_mark_;
   ContactSurface surface_;
   SlidingContact contact_;
-  std::vector<double> gap_, contact_heat_;
+  std::vector<double> gap_;
   double contact_energy_ = 0.0;
   // How many particles were debris when model_.surface was last built (-1: build it at the first step).
   LocalIndex surface_debris_ = -1;
