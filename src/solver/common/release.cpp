@@ -36,8 +36,16 @@ LocalIndex DebrisRelease::apply(ParticleState& model, const Share& share) {
   PointStore& points = model.points;
   const LocalIndex np = points.owned;
   std::vector<Member> mine;
+  LocalIndex released = 0;
   for (LocalIndex p = 0; p < np; ++p)
     if (share.own(p) && points.failed(p) && points.stress[p].trace() == 0.0) {
+      if (!exchange_) {  // released where it is, with the velocity its method gives it
+        points.carrier[p] = -1;
+        points.stress[p].setZero();
+        points.viscous_pressure[p] = 0.0;
+        ++released;
+        continue;
+      }
       Member m;
       m.id = points.id[p];
       m.x = points.x[p];
@@ -45,17 +53,9 @@ LocalIndex DebrisRelease::apply(ParticleState& model, const Share& share) {
       m.body = points.body[p];
       mine.push_back(m);
     }
+  if (!exchange_) return released;
   const std::vector<Member> releases = everyRanks(mine, share);
   if (releases.empty()) return 0;
-  if (!exchange_) {
-    for (LocalIndex p = 0; p < np; ++p)
-      if (share.own(p) && points.failed(p) && points.stress[p].trace() == 0.0) {
-        points.carrier[p] = -1;
-        points.stress[p].setZero();
-        points.viscous_pressure[p] = 0.0;
-      }
-    return static_cast<LocalIndex>(mine.size());
-  }
   std::vector<Member> members;
   std::vector<LocalIndex> local;
   collect(points, share, releases, members, local);
