@@ -60,10 +60,10 @@ int main(int argc, char** argv) {
       continue;
     }
     fmt::print(
-        "Noh, mesh {}: {} points, {} steps; plateau density {:.2f} ({:+.1f}%), centre {:.2f}, shock at {:.4f} "
-        "(vs {:.3f}), energy {:+.2f}%\n",
-        mesh, r.points, r.steps, r.density, 100 * (r.density / r.reference_density - 1), r.centre_density,
-        r.shock_radius, r.reference_shock_radius, 100 * r.energy_error);
+        "Noh, mesh {}: {} points, {} steps; plateau density {:.2f} ({:+.1f}%; {:.2f} over the space it fills), "
+        "centre {:.2f}, shock at {:.4f} (vs {:.3f}), energy {:+.2f}%\n",
+        mesh, r.points, r.steps, r.density, 100 * (r.density / r.reference_density - 1), r.packed_density,
+        r.centre_density, r.shock_radius, r.reference_shock_radius, 100 * r.energy_error);
     if (!profile) continue;
     fmt::print("{:>7} {:>7} {:>7} {:>7}\n", "r", "rho", "v_r", "e");
     for (const kessler::verify::Shell& s : r.profile)

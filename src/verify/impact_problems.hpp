@@ -65,7 +65,10 @@ struct Shell {
 };
 
 struct NohResult {
-  double density = 0.0;         // mass-weighted density of the plateau 0.25 r_s < r < 0.75 r_s
+  double density = 0.0;  // mass-weighted density of the plateau 0.25 r_s < r < 0.75 r_s
+  // The plateau's mass over the space it fills (the shell 0.25 r_s < r < 0.75 r_s of the octant),
+  // not over its particles' volumes: where the two differ, the volumes no longer tile the space.
+  double packed_density = 0.0;
   double centre_density = 0.0;  // within 0.25 r_s (wall heating)
   double shock_radius = 0.0;    // where the radial velocity crosses -1/2
   double reference_density = 0.0, reference_shock_radius = 0.0;
