@@ -168,7 +168,7 @@ void Integrator::step() {
 double Integrator::smoothingLength(LocalIndex p) const {
   const PointStore& points = model_.points;
   const double h0 = settings_.sph.smoothing * points.spacing0[p];
-  return std::clamp(settings_.sph.smoothing * points.spacing(p), 0.5 * h0, 2.0 * h0);
+  return std::clamp(settings_.sph.smoothing * points.spacing(p), 0.1 * h0, 2.0 * h0);
 }
 
 double Integrator::meanNeighbours() const {

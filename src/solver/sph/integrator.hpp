@@ -55,8 +55,9 @@ class Integrator {
   const Settings& settings() const { return settings_; }
   const PhaseTimers& timers() const { return timers_; }
   Energies energies() const;
-  // The smoothing length of particle p, m: `smoothing` times its current spacing, within a half and
-  // twice its reference one (expanded debris does not widen every search).
+  // The smoothing length of particle p, m: `smoothing` times its current spacing, within a tenth and
+  // twice its reference one (expanded debris does not widen every search; compressed matter keeps
+  // its neighbours down to a thousandfold compression, beyond any shock's).
   double smoothingLength(LocalIndex p) const;
   // The mean pairs of a particle, over every rank (collective in a distributed run).
   double meanNeighbours() const;
