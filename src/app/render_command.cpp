@@ -8,10 +8,12 @@
 #include <fmt/format.h>
 
 #include <sys/wait.h>
+#include <chrono>
 #include <cstdlib>
 #include <memory>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace kessler::app {
@@ -61,13 +63,17 @@ void render(const RenderArguments& args) {
   if (args.every > 0) command += fmt::format(" --every {}", args.every);
   if (!args.out.empty()) command += " --out " + shellQuoted(args.out);
   int status = runOutsideMpi(command);
-  // Under load, xvfb-run has been seen to hand pvbatch a display it could not reach (1 run in a
-  // full parallel test suite; "bad X server connection", an abort): a second try gets a fresh
-  // server. Exit status 1 is the script's own refusal (a field the run does not have): not retried.
-  const bool refused = WIFEXITED(status) && WEXITSTATUS(status) == 1;
-  if (status != 0 && !refused && !prefix.empty()) {
-    log::info("kessler render: pvbatch failed under xvfb-run (exit status {}); trying once more",
-              WIFEXITED(status) ? WEXITSTATUS(status) : status);
+  // Under load, xvfb-run has been seen to hand pvbatch a display it could not reach ("bad X server
+  // connection", an abort): 1 run in a full parallel test suite, and once both of two tries made a
+  // second apart (2026-12-03, the suite beside other runs), where the second may have met the first's
+  // server still on its way out. Two more tries, after 3 and 10 s, each with a fresh server. Exit
+  // status 1 is the script's own refusal (a field the run does not have): not retried.
+  const auto refused = [](int s) { return WIFEXITED(s) && WEXITSTATUS(s) == 1; };
+  for (const int pause : {3, 10}) {
+    if (status == 0 || refused(status) || prefix.empty()) break;
+    log::info("kessler render: pvbatch failed under xvfb-run (exit status {}); trying again in {} s",
+              WIFEXITED(status) ? WEXITSTATUS(status) : status, pause);
+    std::this_thread::sleep_for(std::chrono::seconds(pause));
     status = runOutsideMpi(command);
   }
   if (status != 0) {
