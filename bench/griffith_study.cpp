@@ -1,8 +1,9 @@
 // Resolution study of the griffith verification (docs/validation.md): runs verify::runGriffith
 // for each a/h given on the command line and prints points, steps, wall time and the failure
 // stress against Griffith's. `--thickness N` (points through the thickness, default 2) and
-// `--eps X` (erosion radius in h, default 2) and `--visibility on|off` (default on) come first. Not a test: a/h = 8
-// takes minutes.
+// `--eps X` (erosion radius in h, default 2), `--visibility on|off` (default on; OTM's option) and
+// `--method otm|sph|rkpm` (default otm) come first. Not a test: a/h = 8 takes minutes.
+#include "verify/fixtures.hpp"
 #include "verify/impact_problems.hpp"
 
 #include <fmt/format.h>
@@ -22,6 +23,8 @@ int main(int argc, char** argv) {
       c.crack_visibility = std::string(argv[i + 1]) == "on";
     else if (option == "--eps")
       c.erosion_radius = std::atof(argv[i + 1]);
+    else if (option == "--method")
+      kessler::verify::useMethod(argv[i + 1]);
     else
       break;
   }

@@ -73,7 +73,7 @@ void Integrator::prepare() {
   {
     ScopedPhase phase(timers_, "kernels");
     kernels_ = buildKernels({model_.reference, points.body, support, points.volume0, model_.cell_volume, model_.faces,
-                             names, settings_.mirrors, holds.faces});
+                             names, settings_.mirrors, holds.faces, model_.crack});
     transposed_ = transpose(kernels_.gradient);
   }
   // Row-sum lumped masses: the coefficients carry the particles' momentum, sum_I m_I vhat_I =
@@ -111,8 +111,11 @@ void Integrator::prepare() {
 }
 
 void Integrator::initialise() {
-  prepare();
   PointStore& points = model_.points;
+  model_.crack.clear();
+  if (std::any_of(points.broken.begin(), points.broken.begin() + points.owned, [](std::uint8_t b) { return b != 0; }))
+    model_.crack.assign(points.broken.begin(), points.broken.begin() + points.owned);
+  prepare();
   for (std::size_t b = 0; b < model_.bodies.size(); ++b)
     model_.materials[model_.bodies[b].material]->initialise(points, body_points_[b].begin, body_points_[b].end);
   collocation_.impose(model_.prescribed_v, model_.coefficient_v);

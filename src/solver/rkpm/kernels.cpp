@@ -15,25 +15,97 @@ namespace kessler::rkpm {
 
 namespace {
 
+// The crack's cells (KernelInput::crack) as boxes, and which of them lie near a point.
+class Crack {
+ public:
+  Crack(const KernelInput& in, double reach) {
+    if (in.crack.empty()) return;
+    const auto n = in.reference.size();
+    std::vector<LocalIndex> index(n, -1);
+    for (std::size_t p = 0; p < n; ++p)
+      if (in.crack[p]) {
+        index[p] = static_cast<LocalIndex>(lo_.size());
+        lo_.push_back(Vec3::Constant(std::numeric_limits<double>::infinity()));
+        hi_.push_back(Vec3::Constant(-std::numeric_limits<double>::infinity()));
+      }
+    if (lo_.empty()) return;
+    for (const CellFace& f : in.faces)
+      for (const LocalIndex side : {f.inner, f.outer}) {
+        if (side < 0 || index[static_cast<std::size_t>(side)] < 0) continue;
+        const auto b = static_cast<std::size_t>(index[static_cast<std::size_t>(side)]);
+        lo_[b] = lo_[b].cwiseMin(f.centroid);
+        hi_[b] = hi_[b].cwiseMax(f.centroid);
+      }
+    double half_diagonal = 0.0;
+    for (std::size_t b = 0; b < lo_.size(); ++b) {
+      // Shrunk by a little, so that a segment along a face, or ending on one, does not pass inside.
+      const Vec3 inset = 1e-9 * (hi_[b] - lo_[b]);
+      lo_[b] += inset;
+      hi_[b] -= inset;
+      centre_.push_back(0.5 * (lo_[b] + hi_[b]));
+      half_diagonal = std::max(half_diagonal, 0.5 * (hi_[b] - lo_[b]).norm());
+    }
+    radius_ = reach + half_diagonal;
+    cells_.build(centre_, static_cast<LocalIndex>(centre_.size()), radius_);
+  }
+  bool empty() const { return lo_.empty(); }
+  // The crack's cells that a segment from x of length below the reach may meet.
+  void near(const Vec3& x, std::vector<LocalIndex>& out) const {
+    out.clear();
+    if (!empty()) cells_.forEachWithin(x, radius_, [&](LocalIndex b, double) { out.push_back(b); });
+  }
+  // Whether the segment a-b passes through the inside of one of the cells `near`.
+  bool hides(const Vec3& a, const Vec3& b, std::span<const LocalIndex> near) const {
+    const Vec3 d = b - a;
+    for (const LocalIndex c : near) {
+      const auto i = static_cast<std::size_t>(c);
+      double enter = 0.0, leave = 1.0;
+      for (int axis = 0; axis < 3 && enter < leave; ++axis) {
+        if (d[axis] == 0.0) {
+          if (a[axis] <= lo_[i][axis] || a[axis] >= hi_[i][axis]) leave = -1.0;
+          continue;
+        }
+        double t0 = (lo_[i][axis] - a[axis]) / d[axis], t1 = (hi_[i][axis] - a[axis]) / d[axis];
+        if (t0 > t1) std::swap(t0, t1);
+        enter = std::max(enter, t0);
+        leave = std::min(leave, t1);
+      }
+      if (enter < leave) return true;
+    }
+    return false;
+  }
+
+ private:
+  std::vector<Vec3> lo_, hi_, centre_;
+  CellList cells_;
+  double radius_ = 0.0;
+};
+
 // The kernel values at one point of body `body`, as (particle, mirror, value) entries: the particles
 // in the search's order, then each image (in the order of its code) in the same order; `shift` is
 // the sum of the values times their images' shifts.
 class Evaluator {
  public:
-  Evaluator(const KernelInput& in, const CellList& cells, const Mirrors& mirrors, double reach)
-      : in_(in), cells_(cells), mirrors_(mirrors), reach_(reach) {}
+  Evaluator(const KernelInput& in, const CellList& cells, const Mirrors& mirrors, const Crack& crack, double reach)
+      : in_(in), cells_(cells), mirrors_(mirrors), crack_(crack), reach_(reach) {}
 
-  // False where the moment matrix is singular (rcond() then says how nearly).
+  // False where the moment matrix is singular (rcond() then says how nearly). With `seen_past_crack`
+  // the crack hides nothing from x.
   bool at(const Vec3& x, int body, double scale, std::vector<LocalIndex>& who, std::vector<std::uint8_t>& mirror,
-          std::vector<double>& psi, Vec3& shift) {
+          std::vector<double>& psi, Vec3& shift, bool seen_past_crack = false) {
     who.clear();
     mirror.clear();
     samples_.clear();
     codes_.clear();
+    if (seen_past_crack)
+      near_crack_.clear();
+    else
+      crack_.near(x, near_crack_);
     mirrors_.near(x, reach_, [&](std::uint8_t m) {
       // The image T X_i of particle i seen from x is i seen from T^-1 x: |x - T X_i| = |T^-1 x - X_i|.
       cells_.forEachWithin(mirrors_.point(x, mirrors_.inverse(m)), reach_, [&](LocalIndex i, double d2) {
         if (in_.body[i] != body || d2 >= in_.support[i] * in_.support[i]) return;
+        if (!near_crack_.empty() && crack_.hides(x, mirrors_.point(in_.reference[i], m), near_crack_)) return;
         who.push_back(i);
         mirror.push_back(mirrors_.flips(m));
         codes_.push_back(m);
@@ -53,7 +125,9 @@ class Evaluator {
   const KernelInput& in_;
   const CellList& cells_;
   const Mirrors& mirrors_;
+  const Crack& crack_;
   double reach_;
+  std::vector<LocalIndex> near_crack_;
   std::vector<rk::Sample> samples_;
   std::vector<std::uint8_t> codes_;
   double rcond_ = 0.0;
@@ -96,6 +170,8 @@ Kernels buildKernels(const KernelInput& in) {
   CellList cells;
   cells.build(in.reference, n, reach);
   const Mirrors mirrors = in.mirrors.any() ? Mirrors(in.mirrors, reach) : Mirrors();
+  const Crack crack(in, reach);
+  auto cracked = [&](LocalIndex p) { return !in.crack.empty() && in.crack[static_cast<std::size_t>(p)] != 0; };
 
   // Where a moment matrix was singular: the first such point in index order (faces after particles).
   struct Failure {
@@ -115,12 +191,12 @@ Kernels buildKernels(const KernelInput& in) {
   std::vector<Vec3> shift(static_cast<std::size_t>(n));
 #pragma omp parallel
   {
-    Evaluator e(in, cells, mirrors, reach);
+    Evaluator e(in, cells, mirrors, crack, reach);
 #pragma omp for schedule(dynamic, 256)
     for (LocalIndex p = 0; p < n; ++p) {
       Row<double>& r = rows[static_cast<std::size_t>(p)];
       if (!e.at(in.reference[p], in.body[p], in.support[p], r.column, r.mirror, r.value,
-                shift[static_cast<std::size_t>(p)]))
+                shift[static_cast<std::size_t>(p)], cracked(p)))
         fail(static_cast<std::size_t>(p), in.reference[p], in.body[p], e.rcond());
     }
   }
@@ -133,13 +209,15 @@ Kernels buildKernels(const KernelInput& in) {
   rows.assign(faces, {});
 #pragma omp parallel
   {
-    Evaluator e(in, cells, mirrors, reach);
+    Evaluator e(in, cells, mirrors, crack, reach);
     Vec3 unused;
 #pragma omp for schedule(dynamic, 256)
     for (std::size_t f = 0; f < faces; ++f) {
       const CellFace& face = in.faces[f];
       Row<double>& r = rows[f];
-      if (!e.at(face.centroid, in.body[face.inner], in.support[face.inner], r.column, r.mirror, r.value, unused))
+      const bool inside_crack = cracked(face.inner) && (face.outer < 0 || cracked(face.outer));
+      if (!e.at(face.centroid, in.body[face.inner], in.support[face.inner], r.column, r.mirror, r.value, unused,
+                inside_crack))
         fail(static_cast<std::size_t>(n) + f, face.centroid, in.body[face.inner], e.rcond());
     }
   }

@@ -69,6 +69,13 @@ struct KernelInput {
   std::span<const std::string> bodies;          // the bodies' names, for errors
   MirrorBox mirrors;                            // the problem's mirror planes (symmetry planes, rollers)
   std::span<const LocalIndex> kept_faces = {};  // faces whose values Kernels::at_faces keeps
+  // Per particle (empty: none): 1 if its cell is a crack that no kernel reaches across. A kernel value
+  // Psi_I(x) is left out where the segment from x to X_I passes through the inside of such a cell
+  // (the visibility criterion of meshfree fracture: Belytschko, Lu & Gu, IJNME 37:229, 1994); the
+  // cell is taken as the box its faces' centroids span (the lattice's element itself). Rows of the
+  // crack's own particles, and of faces between two of its cells or on the surface, see every
+  // particle. Images across mirror planes are tested against the crack on this side only.
+  std::span<const std::uint8_t> crack = {};
 };
 
 // Throws kessler::Error naming the body and the position where a moment matrix is singular.

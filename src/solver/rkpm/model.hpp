@@ -34,6 +34,9 @@ struct Model : ParticleState {
   // Each particle's lattice element (i, j, k) in its body, the surface's source ({-1, -1, -1} for a
   // particle of a checkpoint that did not save them).
   std::vector<std::array<int, 3>> element;
+  // Per particle: 1 if it was broken before the first step, a crack the deck or problem made, which
+  // no kernel reaches across (KernelInput::crack); empty if none was.
+  std::vector<std::uint8_t> crack;
 };
 
 }  // namespace kessler::rkpm

@@ -81,6 +81,7 @@ void RkpmMethod::save(StateWriter& out) const {
   std::vector<std::int32_t> element;
   for (const std::array<int, 3>& e : model_.element) element.insert(element.end(), e.begin(), e.end());
   out.array("/rkpm/element", element);
+  if (!model_.crack.empty()) out.array("/rkpm/crack", model_.crack);
 }
 
 void RkpmMethod::load(const StateReader& in) {
@@ -124,6 +125,9 @@ void RkpmMethod::load(const StateReader& in) {
     in.array("/rkpm/element", element, 3 * n);
     for (std::size_t p = 0; p < n; ++p) model_.element[p] = {element[3 * p], element[3 * p + 1], element[3 * p + 2]};
   }
+  // The crack made before the first step, which the kernels do not reach across (none if not saved).
+  model_.crack.clear();
+  if (in.has("/rkpm/crack")) in.array("/rkpm/crack", model_.crack, n);
   integrator_.restore(Clock{in.doubleScalar("rkpm_time"), in.intScalar("rkpm_steps"), in.doubleScalar("rkpm_dt_last"),
                             in.doubleScalar("rkpm_dt_next"), in.doubleScalar("rkpm_dt_initial")},
                       in.doubleScalar("rkpm_contact_energy"));

@@ -62,12 +62,12 @@ Problem latticeBlock(std::vector<int> symmetry_axes = {}) {
   return block(body, std::move(symmetry_axes));
 }
 
-Kernels kernelsOf(const Model& model, const Problem& problem) {
+Kernels kernelsOf(const Model& model, const Problem& problem, std::span<const std::uint8_t> crack = {}) {
   std::vector<double> support;
   for (const double s : model.points.spacing0) support.push_back(problem.settings.rkpm.support * s);
   const std::vector<std::string> names{"block"};
   return buildKernels({model.reference, model.points.body, support, model.points.volume0, model.cell_volume,
-                       model.faces, names, mirrorBox(problem)});
+                       model.faces, names, mirrorBox(problem), {}, crack});
 }
 
 TEST(ReproducingKernel, ReproducesLinearFieldsOnIrregularParticles) {
@@ -117,8 +117,9 @@ TEST(ReproducingKernel, RefusesASingularMomentMatrix) {
 
 // The smoothed gradients of a linear field are its gradient, in every cell (its surface's too), and the
 // kernels give the field at the particles: the patch test, on particles moved within their cells.
-void expectPatchTest(const Problem& problem, const Model& model, const Mat3& G, const Vec3& b) {
-  const Kernels k = kernelsOf(model, problem);
+void expectPatchTest(const Problem& problem, const Model& model, const Mat3& G, const Vec3& b,
+                     std::span<const std::uint8_t> crack = {}) {
+  const Kernels k = kernelsOf(model, problem, crack);
   const auto n = static_cast<LocalIndex>(model.reference.size());
   double worst_gradient = 0.0, worst_value = 0.0;
   for (LocalIndex j = 0; j < n; ++j) {
@@ -149,6 +150,57 @@ TEST(Rkpm, PatchTestOnLatticeCells) {
   G << 0.1, -0.03, 0.02, 0.05, -0.08, 0.01, -0.04, 0.06, 0.03;
   const Problem problem = latticeBlock();
   expectPatchTest(problem, jittered(problem), G, Vec3(1e-3, 2e-3, 3e-3));
+}
+
+// A crack made before the first step (a layer of broken particles' cells) is a boundary no kernel
+// reaches across (the visibility criterion): no intact particle's values or smoothed gradients take
+// a coefficient from the other side of it, or from the crack's own particles; beyond the tip's reach
+// the kernels are those of the uncracked block; and they still pass the patch test.
+TEST(Rkpm, KernelsDoNotReachAcrossACrack) {
+  BodySetup body;
+  body.mesh = geometry::MeshRequest{geometry::Box{Vec3(0, 0, 0), Vec3(9e-3, 8e-3, 3e-3)}, h};
+  const Problem problem = block(body);
+  const Model model = jittered(problem), lattice = buildModel(problem);
+  const auto n = model.reference.size();
+  // The crack: the row of cells 3 mm < y < 4 mm over x < 4 mm, its tip at x = 4 mm.
+  std::vector<std::uint8_t> crack(n, 0);
+  auto cellCentre = [&](std::size_t p) { return lattice.reference[p]; };  // the particles are moved within them
+  Mat3 G;
+  G << 0.1, -0.03, 0.02, 0.05, -0.08, 0.01, -0.04, 0.06, 0.03;
+  for (std::size_t p = 0; p < n; ++p)
+    crack[p] = cellCentre(p)[1] > 3e-3 && cellCentre(p)[1] < 4e-3 && cellCentre(p)[0] < 4e-3;
+  ASSERT_EQ(std::count(crack.begin(), crack.end(), std::uint8_t{1}), 4 * 3);
+  const Kernels plain = kernelsOf(model, problem), cracked = kernelsOf(model, problem, crack);
+  auto side = [&](std::size_t p) { return cellCentre(p)[1] < 3e-3 ? -1 : cellCentre(p)[1] > 4e-3 ? 1 : 0; };
+  int checked = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (crack[k]) continue;
+    auto expectOneSided = [&](const auto& table) {
+      for (LocalIndex e = table.offset[k]; e < table.offset[k + 1]; ++e) {
+        const auto i = static_cast<std::size_t>(table.column[static_cast<std::size_t>(e)]);
+        EXPECT_FALSE(crack[i]) << "particle " << k << " sees the crack's particle " << i;
+        // Well behind the tip (x < 2 mm), nothing across it.
+        if (cellCentre(k)[0] < 2e-3 && cellCentre(i)[0] < 2e-3 && side(k) != 0) {
+          EXPECT_NE(side(i), -side(k)) << "particle " << k << " sees " << i << " across the crack";
+        }
+      }
+    };
+    expectOneSided(cracked.psi);
+    expectOneSided(cracked.gradient);
+    // Beyond the tip by more than the support and the cell (x > 7 mm), nothing changed.
+    if (cellCentre(k)[0] > 7e-3) {
+      ASSERT_EQ(cracked.psi.offset[k + 1] - cracked.psi.offset[k], plain.psi.offset[k + 1] - plain.psi.offset[k]);
+      for (LocalIndex e = 0; e < cracked.psi.offset[k + 1] - cracked.psi.offset[k]; ++e) {
+        const auto c = static_cast<std::size_t>(cracked.psi.offset[k] + e),
+                   p = static_cast<std::size_t>(plain.psi.offset[k] + e);
+        EXPECT_EQ(cracked.psi.column[c], plain.psi.column[p]);
+        EXPECT_EQ(cracked.psi.value[c], plain.psi.value[p]);
+      }
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 0);
+  expectPatchTest(problem, model, G, Vec3(1e-3, 2e-3, 3e-3), crack);
 }
 
 // The smoothed gradients hold for any closed cells, not only a lattice's: the kernels built directly
