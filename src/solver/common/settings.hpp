@@ -106,6 +106,10 @@ struct RkpmOptions {
   // lattice sees about 33 of them, and its linear basis stays well conditioned one layer inside a
   // surface or an edge.
   double support = 2.0;
+  // A kernel update (docs/theory.md §12) when an intact particle's Green-Lagrange strain since the last
+  // one, E = (F_inc^T F_inc - I) / 2, exceeds this in norm (sqrt(E:E)); 0 never updates. At 0.5 an
+  // update comes at 36% compression along every axis, or a shear of 0.9.
+  double update_strain = 0.5;
 };
 
 // A method's settings: what every method reads and each method's own block.

@@ -14,4 +14,10 @@ double smallestStretch(const Mat3& F) {
   return smallestRootEigenvalue(F.transpose() * F);
 }
 
+double largestStretch(const Mat3& F) {
+  Eigen::SelfAdjointEigenSolver<Mat3> eigen;
+  eigen.computeDirect(F.transpose() * F, Eigen::EigenvaluesOnly);
+  return std::sqrt(std::max(eigen.eigenvalues()[2], 0.0));
+}
+
 }  // namespace kessler

@@ -18,6 +18,8 @@ double smallestRootEigenvalue(const Mat3& symmetric);
 // point's length scale is its reference spacing times it (plastic flow keeps the volume, so
 // h0 J^(1/3) would not shrink, while it can flatten the material to a fraction of its spacing).
 double smallestStretch(const Mat3& F);
+// The largest principal stretch of F (the square root of the largest eigenvalue of F^T F).
+double largestStretch(const Mat3& F);
 
 // cfl times the smallest, over the points that are not debris, of length(p) / c_p (where c_p > 0)
 // and 1 / (3 |volume_rate_p|), and of `bound` (the limits of other parts of the step, such as

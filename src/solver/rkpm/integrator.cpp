@@ -18,6 +18,13 @@ namespace kessler::rkpm {
 
 namespace {
 
+// The lumped projection's passes that carry the particles' velocities onto the new coefficients at a
+// kernel update (interpolatingCoefficients).
+constexpr int update_passes = 8;
+// The steps after a refused kernel update (no usable kernels on the present configuration) before the
+// next is tried, doubled at each refusal.
+constexpr std::int64_t update_retry = 20;
+
 // Row I of the transpose: the rows J that list I, with their values, in the order of J.
 Table<Vec3> transpose(const Table<Vec3>& t) {
   const LocalIndex n = t.rows();
@@ -66,14 +73,20 @@ void Integrator::prepare() {
   const auto n = static_cast<std::size_t>(points.owned);
   body_points_ = bodyRanges(points.body, points.owned, model_.bodies.size());
   std::vector<double> support(n);
-  for (std::size_t p = 0; p < n; ++p) support[p] = settings_.rkpm.support * points.spacing0[p];
+  // The support follows the spacing of the kernels' reference configuration: after a kernel update,
+  // the first spacing times the largest principal stretch then, so that it still reaches two spacings
+  // along the most stretched direction (and more along the others).
+  for (std::size_t p = 0; p < n; ++p)
+    support[p] = settings_.rkpm.support * points.spacing0[p] *
+                 (model_.reference_F.empty() ? 1.0 : largestStretch(model_.reference_F[p]));
   std::vector<std::string> names;
   for (const BodyInfo& b : model_.bodies) names.push_back(b.name);
   const SurfaceHolds holds = surfaceHolds(model_);
   {
     ScopedPhase phase(timers_, "kernels");
     kernels_ = buildKernels({model_.reference, points.body, support, points.volume0, model_.cell_volume, model_.faces,
-                             names, settings_.mirrors, holds.faces, model_.crack});
+                             names, settings_.mirrors, holds.faces, model_.crack, model_.reference_F, model_.origin,
+                             model_.alone, !model_.reference_F.empty()});
     transposed_ = transpose(kernels_.gradient);
   }
   // Row-sum lumped masses: the coefficients carry the particles' momentum, sum_I m_I vhat_I =
@@ -86,10 +99,11 @@ void Integrator::prepare() {
           points.mass[k] * psi.value[static_cast<std::size_t>(e)];
   for (std::size_t i = 0; i < n; ++i)
     if (!(mass_[i] > 0.0))
-      throw Error(
-          fmt::format("RKPM: the lumped mass of particle {} of body '{}' is {:.3g} kg, not positive: its "
-                      "kernel's negative values outweigh the positive (docs/theory.md §12)",
-                      points.id[i], model_.bodies[static_cast<std::size_t>(points.body[i])].name, mass_[i]));
+      throw Error(fmt::format(
+          "RKPM: the lumped mass of particle {} of body '{}' at ({:.4g}, {:.4g}, {:.4g}) mm is {:.3g} kg, not "
+          "positive: its kernel's negative values outweigh the positive (docs/theory.md §12)",
+          points.id[i], model_.bodies[static_cast<std::size_t>(points.body[i])].name, 1e3 * model_.reference[i].x(),
+          1e3 * model_.reference[i].y(), 1e3 * model_.reference[i].z(), mass_[i]));
   collocation_ = VelocityCollocation(psi, model_.constrained, mass_, kernels_.at_faces, holds.held);
   acceleration_.assign(n, Vec3::Zero());
   volume_rate_.assign(n, 0.0);
@@ -141,10 +155,14 @@ void Integrator::initialise() {
                                                   settings_.solver.cfl, [&](LocalIndex p) { return stepLength(p); });
 }
 
-void Integrator::restore(const Clock& clock, double contact_energy) {
+void Integrator::restore(const Clock& clock, double contact_energy, const KernelUpdates& updates) {
   prepare();
   clock_ = clock;
   contact_energy_ = contact_energy;
+  update_energy_ = updates.energy;
+  kernel_updates_ = updates.made;
+  refused_updates_ = updates.refused;
+  retry_at_ = updates.retry_at;
   forces();
 }
 
@@ -177,6 +195,10 @@ void Integrator::step() {
     {
       ScopedPhase phase(timers_, "assembly");
       place();
+    }
+    if (update_due_) updateKernels();
+    {
+      ScopedPhase phase(timers_, "assembly");
       forces();
     }
   } catch (const NumericalError& e) {
@@ -326,11 +348,15 @@ void Integrator::deform(double dt) {
   for (LocalIndex i = 0; i < n; ++i) model_.coefficient_x[i] += du_[i];
   const Table<Vec3>& g = kernels_.gradient;
   LocalIndex bad = n;
-#pragma omp parallel for schedule(static) reduction(min : bad)
+  const bool updated = !model_.reference_F.empty();
+  const double limit = settings_.rkpm.update_strain;
+  int due = 0;
+#pragma omp parallel for schedule(static) reduction(min : bad) reduction(max : due)
   for (LocalIndex j = 0; j < n; ++j) {
     points.dF[j].setIdentity();
     volume_rate_[j] = 0.0;
     if (points.debris(j)) continue;
+    // The deformation since the kernels' reference configuration, then the whole.
     Mat3 F = Mat3::Identity();
     for (LocalIndex e = g.offset[j]; e < g.offset[j + 1]; ++e) {
       const auto slot = static_cast<std::size_t>(e);
@@ -338,6 +364,8 @@ void Integrator::deform(double dt) {
       F.noalias() +=
           reflect(Vec3(model_.coefficient_x[i] - model_.reference[i]), g.mirror[slot]) * g.value[slot].transpose();
     }
+    if (limit > 0.0 && !points.failed(j) && (F.transpose() * F - Mat3::Identity()).norm() > 2.0 * limit) due = 1;
+    if (updated) F = F * model_.reference_F[j];
     const double J = F.determinant();
     const Mat3 dF = F * points.F[j].inverse();
     const double j_step = dF.determinant();
@@ -353,6 +381,7 @@ void Integrator::deform(double dt) {
     }
   }
   if (bad < n) failAtPoint(bad, "volume inverted or collapsed over the step (det F <= 0)");
+  update_due_ = due != 0 && clock_.steps >= retry_at_;
   // The viscosity's limiter, from the step's volume change of the particles the kernel reaches.
   const Table<double>& psi = kernels_.psi;
 #pragma omp parallel for schedule(static)
@@ -413,8 +442,15 @@ void Integrator::forces() {
       piola_[j].setZero();
       continue;
     }
+    // The kernels' gradients are taken in their reference configuration (the last kernel update's):
+    // the Piola stress is the one relative to it, V_J sigma_J F_inc^-T with F_inc the deformation since.
     const Mat3& F = points.F[j];
-    piola_[j] = points.volume0[j] * F.determinant() * points.stress[j] * F.inverse().transpose();
+    if (model_.reference_F.empty()) {
+      piola_[j] = points.volume0[j] * F.determinant() * points.stress[j] * F.inverse().transpose();
+    } else {
+      const Mat3 F_inc = F * model_.reference_F[j].inverse();
+      piola_[j] = points.volume0[j] * F.determinant() * points.stress[j] * F_inc.inverse().transpose();
+    }
   }
   const Table<Vec3>& t = transposed_;
 #pragma omp parallel for schedule(static)
@@ -428,19 +464,74 @@ void Integrator::forces() {
   }
 }
 
+// A kernel update (docs/theory.md §12, "Kernel updates"): the particles' present positions become the
+// kernels' centres, each cell its first cell mapped by the particle's F, debris stands alone; the
+// coefficients are the positions (the kernels reproduce them) and the velocities that interpolate to
+// the particles' velocities, so that the particles' motion, the coefficients' momentum and every
+// particle's deformation gradient carry through.
+void Integrator::updateKernels() {
+  ScopedPhase phase(timers_, "kernel update");
+  PointStore& points = model_.points;
+  const auto n = static_cast<std::size_t>(points.owned);
+  const double kinetic = coefficientKinetic();
+  struct Kept {
+    std::vector<Vec3> origin, reference, coefficient_x;
+    std::vector<Mat3> reference_F;
+    std::vector<std::uint8_t> alone;
+  } kept{model_.origin, model_.reference, model_.coefficient_x, model_.reference_F, model_.alone};
+  if (model_.origin.empty()) model_.origin = model_.reference;
+  model_.reference_F.assign(points.F.begin(), points.F.begin() + points.owned);
+  model_.reference.assign(points.x.begin(), points.x.begin() + points.owned);
+  model_.coefficient_x = model_.reference;
+  model_.alone.assign(n, 0);
+  for (LocalIndex p = 0; p < points.owned; ++p) model_.alone[static_cast<std::size_t>(p)] = points.debris(p) ? 1 : 0;
+  const std::vector<Vec3> velocity(points.v.begin(), points.v.begin() + points.owned);
+  const std::vector<double> rate = volume_rate_;
+  const LocalIndex surface_debris = surface_debris_;
+  update_due_ = false;
+  try {
+    prepare();
+  } catch (const Error& e) {
+    // The present configuration gives no usable kernels (a lumped mass not positive where the particles
+    // have tangled): the last ones are kept, and the update is tried again later.
+    model_.origin = std::move(kept.origin);
+    model_.reference = std::move(kept.reference);
+    model_.coefficient_x = std::move(kept.coefficient_x);
+    model_.reference_F = std::move(kept.reference_F);
+    model_.alone = std::move(kept.alone);
+    prepare();
+    volume_rate_ = rate;
+    surface_debris_ = surface_debris;
+    // Each refusal doubles the wait (bounded), so that a tangle that stays costs few builds.
+    retry_at_ = clock_.steps + (update_retry << std::min<std::int64_t>(refused_updates_, 10));
+    ++refused_updates_;
+    last_refusal_ = fmt::format("step {}: {}", clock_.steps + 1, e.what());
+    return;
+  }
+  volume_rate_ = rate;
+  surface_debris_ = surface_debris;
+  model_.coefficient_v =
+      interpolatingCoefficients(kernels_.psi, points.mass, mass_, velocity, model_.coefficient_v, update_passes);
+  update_energy_ += kinetic - coefficientKinetic();
+  ++kernel_updates_;
+  place();
+}
+
+double Integrator::coefficientKinetic() const {
+  double kinetic = 0.0;
+  for (std::size_t i = 0; i < mass_.size(); ++i) kinetic += 0.5 * mass_[i] * model_.coefficient_v[i].squaredNorm();
+  return kinetic;
+}
+
 double Integrator::stepLength(LocalIndex p) const {
   return model_.points.spacing0[p] * smallestStretch(model_.points.F[p]);
 }
 
 Energies Integrator::energies() const {
-  Energies e = pointEnergies(model_.points, contact_energy_);
-  double kinetic = 0.0;
+  Energies e = pointEnergies(model_.points, contact_energy_ + update_energy_);
   Vec3 momentum = Vec3::Zero();
-  for (std::size_t i = 0; i < mass_.size(); ++i) {
-    kinetic += 0.5 * mass_[i] * model_.coefficient_v[i].squaredNorm();
-    momentum += mass_[i] * model_.coefficient_v[i];
-  }
-  e.kinetic = kinetic;
+  for (std::size_t i = 0; i < mass_.size(); ++i) momentum += mass_[i] * model_.coefficient_v[i];
+  e.kinetic = coefficientKinetic();
   e.momentum = momentum;
   return e;
 }

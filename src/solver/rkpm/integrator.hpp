@@ -26,6 +26,7 @@
 #include "solver/rkpm/kernels.hpp"
 #include "solver/rkpm/model.hpp"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,11 @@ struct Settings {
   MirrorBox mirrors;  // the symmetry planes and rollers (solver/common/mirror.hpp)
 };
 
+struct KernelUpdates {
+  std::int64_t made = 0, refused = 0, retry_at = 0;
+  double energy = 0.0;
+};
+
 class Integrator {
  public:
   Integrator(Model& model, const Settings& settings);
@@ -45,7 +51,7 @@ class Integrator {
   // and time step of a new run.
   void initialise();
   // A restored run: the kernels of its reference configuration and the forces of its state.
-  void restore(const Clock& clock, double contact_energy);
+  void restore(const Clock& clock, double contact_energy, const KernelUpdates& updates = {});
   void step();
 
   bool finished() const { return clock_.time >= settings_.solver.end_time * (1.0 - 1e-12); }
@@ -61,6 +67,11 @@ class Integrator {
   double meanNeighbours() const;
   // The kinetic energy the sliding contact has taken so far, J (booked apart, as stabilisation energy).
   double contactEnergy() const { return contact_energy_; }
+  // The kernel updates so far: how many were made and refused, the kinetic energy they took, J, and
+  // the step before which none is tried (after a refused one).
+  KernelUpdates kernelUpdates() const { return {kernel_updates_, refused_updates_, retry_at_, update_energy_}; }
+  // Why the last update this process tried was refused (empty if none was).
+  const std::string& lastRefusal() const { return last_refusal_; }
 
  private:
   void prepare();
@@ -71,6 +82,8 @@ class Integrator {
   void updateMaterials(double dt);
   void place();
   void forces();
+  void updateKernels();
+  double coefficientKinetic() const;
   [[noreturn]] void failAtPoint(LocalIndex p, const std::string& what) const;
 
   Model& model_;
@@ -99,6 +112,12 @@ class Integrator {
   SlidingContact contact_;
   std::vector<double> gap_;
   double contact_energy_ = 0.0;
+  // Kernel updates: whether the last deformation asked for one, how many were made, and the kinetic
+  // energy they took from the coefficients (the particles' velocities are kept; booked apart).
+  bool update_due_ = false;
+  std::int64_t kernel_updates_ = 0, refused_updates_ = 0, retry_at_ = 0;
+  double update_energy_ = 0.0;
+  std::string last_refusal_;
   // How many particles were debris when model_.surface was last built (-1: build it at the first step).
   LocalIndex surface_debris_ = -1;
   bool sliding_ = false, rebuilds_ = false;

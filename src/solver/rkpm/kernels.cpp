@@ -18,7 +18,7 @@ namespace {
 // The crack's cells (KernelInput::crack) as boxes, and which of them lie near a point.
 class Crack {
  public:
-  Crack(const KernelInput& in, double reach) {
+  Crack(const KernelInput& in, std::span<const CellFace> faces, double reach) {
     if (in.crack.empty()) return;
     const auto n = in.reference.size();
     std::vector<LocalIndex> index(n, -1);
@@ -29,7 +29,7 @@ class Crack {
         hi_.push_back(Vec3::Constant(-std::numeric_limits<double>::infinity()));
       }
     if (lo_.empty()) return;
-    for (const CellFace& f : in.faces)
+    for (const CellFace& f : faces)
       for (const LocalIndex side : {f.inner, f.outer}) {
         if (side < 0 || index[static_cast<std::size_t>(side)] < 0) continue;
         const auto b = static_cast<std::size_t>(index[static_cast<std::size_t>(side)]);
@@ -105,6 +105,7 @@ class Evaluator {
       // The image T X_i of particle i seen from x is i seen from T^-1 x: |x - T X_i| = |T^-1 x - X_i|.
       cells_.forEachWithin(mirrors_.point(x, mirrors_.inverse(m)), reach_, [&](LocalIndex i, double d2) {
         if (in_.body[i] != body || d2 >= in_.support[i] * in_.support[i]) return;
+        if (!in_.alone.empty() && in_.alone[static_cast<std::size_t>(i)]) return;
         if (!near_crack_.empty() && crack_.hides(x, mirrors_.point(in_.reference[i], m), near_crack_)) return;
         who.push_back(i);
         mirror.push_back(mirrors_.flips(m));
@@ -120,6 +121,15 @@ class Evaluator {
     return rcond_ >= rk::min_rcond;
   }
   double rcond() const { return rcond_; }
+
+  // The row of a point that takes particle `owner`'s coefficient alone.
+  static void alone(LocalIndex owner, std::vector<LocalIndex>& who, std::vector<std::uint8_t>& mirror,
+                    std::vector<double>& psi, Vec3& shift) {
+    who.assign(1, owner);
+    mirror.assign(1, 0);
+    psi.assign(1, 1.0);
+    shift = Vec3::Zero();
+  }
 
  private:
   const KernelInput& in_;
@@ -160,18 +170,60 @@ Table<T> flatten(std::vector<Row<T>>& rows) {
   return t;
 }
 
+// The cells after a kernel update (KernelInput::cell_F): each cell's faces mapped by its own F, one
+// face per cell and side; kept_faces (surface faces, one side each) renumbered to match.
+struct MappedCells {
+  std::vector<CellFace> faces;
+  std::vector<double> volume;
+  std::vector<LocalIndex> kept;
+};
+
+MappedCells mappedCells(const KernelInput& in) {
+  MappedCells m;
+  const auto n = in.reference.size();
+  m.volume.resize(n);
+  std::vector<Mat3> cofactor(n);  // det F F^-T
+  for (std::size_t j = 0; j < n; ++j) {
+    const Mat3& F = in.cell_F[j];
+    m.volume[j] = F.determinant() * in.cell_volume[j];
+    cofactor[j] = F.determinant() * F.inverse().transpose();
+  }
+  std::vector<LocalIndex> inner_side(in.faces.size());
+  m.faces.reserve(2 * in.faces.size());
+  auto mapped = [&](const CellFace& f, LocalIndex side, const Vec3& area) {
+    const auto j = static_cast<std::size_t>(side);
+    return CellFace{cofactor[j] * area, in.reference[j] + in.cell_F[j] * (f.centroid - in.cell_origin[j]), side, -1};
+  };
+  for (std::size_t f = 0; f < in.faces.size(); ++f) {
+    const CellFace& face = in.faces[f];
+    inner_side[f] = static_cast<LocalIndex>(m.faces.size());
+    m.faces.push_back(mapped(face, face.inner, face.area));
+    if (face.outer >= 0) m.faces.push_back(mapped(face, face.outer, Vec3(-face.area)));
+  }
+  for (const LocalIndex f : in.kept_faces) m.kept.push_back(inner_side[static_cast<std::size_t>(f)]);
+  return m;
+}
+
 }  // namespace
 
 Kernels buildKernels(const KernelInput& in) {
   const auto n = static_cast<LocalIndex>(in.reference.size());
   Kernels k;
   if (n == 0) return k;
+  MappedCells mapped;
+  if (!in.cell_F.empty()) mapped = mappedCells(in);
+  const std::span<const CellFace> all_faces = in.cell_F.empty() ? in.faces : std::span<const CellFace>(mapped.faces);
+  const std::span<const double> cell_volume =
+      in.cell_F.empty() ? in.cell_volume : std::span<const double>(mapped.volume);
+  const std::span<const LocalIndex> kept_faces =
+      in.cell_F.empty() ? in.kept_faces : std::span<const LocalIndex>(mapped.kept);
   const double reach = *std::max_element(in.support.begin(), in.support.end());
   CellList cells;
   cells.build(in.reference, n, reach);
   const Mirrors mirrors = in.mirrors.any() ? Mirrors(in.mirrors, reach) : Mirrors();
-  const Crack crack(in, reach);
+  const Crack crack(in, all_faces, reach);
   auto cracked = [&](LocalIndex p) { return !in.crack.empty() && in.crack[static_cast<std::size_t>(p)] != 0; };
+  auto lone = [&](LocalIndex p) { return !in.alone.empty() && in.alone[static_cast<std::size_t>(p)] != 0; };
 
   // Where a moment matrix was singular: the first such point in index order (faces after particles).
   struct Failure {
@@ -195,9 +247,18 @@ Kernels buildKernels(const KernelInput& in) {
 #pragma omp for schedule(dynamic, 256)
     for (LocalIndex p = 0; p < n; ++p) {
       Row<double>& r = rows[static_cast<std::size_t>(p)];
-      if (!e.at(in.reference[p], in.body[p], in.support[p], r.column, r.mirror, r.value,
-                shift[static_cast<std::size_t>(p)], cracked(p)))
-        fail(static_cast<std::size_t>(p), in.reference[p], in.body[p], e.rcond());
+      Vec3& s = shift[static_cast<std::size_t>(p)];
+      if (lone(p)) {
+        Evaluator::alone(p, r.column, r.mirror, r.value, s);
+      } else if (!e.at(in.reference[p], in.body[p], in.support[p], r.column, r.mirror, r.value, s, cracked(p))) {
+        if (in.alone_where_singular) {
+          Evaluator::alone(p, r.column, r.mirror, r.value, s);
+#pragma omp atomic
+          ++k.fallbacks;
+        } else {
+          fail(static_cast<std::size_t>(p), in.reference[p], in.body[p], e.rcond());
+        }
+      }
     }
   }
   k.psi = flatten(rows);
@@ -205,7 +266,7 @@ Kernels buildKernels(const KernelInput& in) {
     k.shift = std::move(shift);
 
   // The values at the faces' centroids.
-  const std::size_t faces = in.faces.size();
+  const std::size_t faces = all_faces.size();
   rows.assign(faces, {});
 #pragma omp parallel
   {
@@ -213,12 +274,21 @@ Kernels buildKernels(const KernelInput& in) {
     Vec3 unused;
 #pragma omp for schedule(dynamic, 256)
     for (std::size_t f = 0; f < faces; ++f) {
-      const CellFace& face = in.faces[f];
+      const CellFace& face = all_faces[f];
       Row<double>& r = rows[f];
       const bool inside_crack = cracked(face.inner) && (face.outer < 0 || cracked(face.outer));
-      if (!e.at(face.centroid, in.body[face.inner], in.support[face.inner], r.column, r.mirror, r.value, unused,
-                inside_crack))
-        fail(static_cast<std::size_t>(n) + f, face.centroid, in.body[face.inner], e.rcond());
+      if (lone(face.inner)) {
+        Evaluator::alone(face.inner, r.column, r.mirror, r.value, unused);
+      } else if (!e.at(face.centroid, in.body[face.inner], in.support[face.inner], r.column, r.mirror, r.value, unused,
+                       inside_crack)) {
+        if (in.alone_where_singular) {
+          Evaluator::alone(face.inner, r.column, r.mirror, r.value, unused);
+#pragma omp atomic
+          ++k.fallbacks;
+        } else {
+          fail(static_cast<std::size_t>(n) + f, face.centroid, in.body[face.inner], e.rcond());
+        }
+      }
     }
   }
   if (failure.at != std::numeric_limits<std::size_t>::max()) {
@@ -232,7 +302,7 @@ Kernels buildKernels(const KernelInput& in) {
 
   // Each cell's faces.
   std::vector<LocalIndex> first(static_cast<std::size_t>(n) + 1, 0), cell_faces;
-  for (const CellFace& f : in.faces) {
+  for (const CellFace& f : all_faces) {
     ++first[static_cast<std::size_t>(f.inner) + 1];
     if (f.outer >= 0) ++first[static_cast<std::size_t>(f.outer) + 1];
   }
@@ -241,9 +311,9 @@ Kernels buildKernels(const KernelInput& in) {
   {
     std::vector<LocalIndex> cursor(first.begin(), first.end() - 1);
     for (std::size_t f = 0; f < faces; ++f) {
-      cell_faces[static_cast<std::size_t>(cursor[in.faces[f].inner]++)] = static_cast<LocalIndex>(f);
-      if (in.faces[f].outer >= 0)
-        cell_faces[static_cast<std::size_t>(cursor[in.faces[f].outer]++)] = static_cast<LocalIndex>(f);
+      cell_faces[static_cast<std::size_t>(cursor[all_faces[f].inner]++)] = static_cast<LocalIndex>(f);
+      if (all_faces[f].outer >= 0)
+        cell_faces[static_cast<std::size_t>(cursor[all_faces[f].outer]++)] = static_cast<LocalIndex>(f);
     }
   }
 
@@ -261,7 +331,7 @@ Kernels buildKernels(const KernelInput& in) {
       terms.clear();
       for (LocalIndex s = first[j]; s < first[j + 1]; ++s) {
         const auto f = static_cast<std::size_t>(cell_faces[static_cast<std::size_t>(s)]);
-        const Vec3 area = in.faces[f].inner == j ? in.faces[f].area : Vec3(-in.faces[f].area);
+        const Vec3 area = all_faces[f].inner == j ? all_faces[f].area : Vec3(-all_faces[f].area);
         for (LocalIndex e = at_faces.offset[f]; e < at_faces.offset[f + 1]; ++e) {
           const auto slot = static_cast<std::size_t>(e);
           terms.push_back({8 * static_cast<std::int64_t>(at_faces.column[slot]) + at_faces.mirror[slot],
@@ -271,7 +341,7 @@ Kernels buildKernels(const KernelInput& in) {
       // Stable: each entry's terms are summed in the order of the cell's faces.
       std::stable_sort(terms.begin(), terms.end(), [](const Term& a, const Term& b) { return a.key < b.key; });
       Row<Vec3>& row = gradients[static_cast<std::size_t>(j)];
-      const double inv = 1.0 / in.cell_volume[j];
+      const double inv = 1.0 / cell_volume[j];
       for (std::size_t t = 0; t < terms.size();) {
         Vec3 sum = Vec3::Zero();
         const std::int64_t key = terms[t].key;
@@ -284,9 +354,9 @@ Kernels buildKernels(const KernelInput& in) {
   }
   k.gradient = flatten(gradients);
 
-  std::vector<Row<double>> kept(in.kept_faces.size());
+  std::vector<Row<double>> kept(kept_faces.size());
   for (std::size_t r = 0; r < kept.size(); ++r) {
-    const auto f = static_cast<std::size_t>(in.kept_faces[r]);
+    const auto f = static_cast<std::size_t>(kept_faces[r]);
     for (LocalIndex e = at_faces.offset[f]; e < at_faces.offset[f + 1]; ++e) {
       const auto slot = static_cast<std::size_t>(e);
       kept[r].column.push_back(at_faces.column[slot]);
@@ -311,6 +381,35 @@ void interpolate(const Table<double>& psi, std::span<const Vec3> coefficients, s
   const LocalIndex n = psi.rows();
 #pragma omp parallel for schedule(static)
   for (LocalIndex k = 0; k < n; ++k) out[k] = valueAt(psi, coefficients, k);
+}
+
+std::vector<Vec3> interpolatingCoefficients(const Table<double>& psi, std::span<const double> particle_mass,
+                                            std::span<const double> mass, std::span<const Vec3> values,
+                                            std::span<const Vec3> guess, int passes) {
+  const LocalIndex n = psi.rows();
+  std::vector<Vec3> out(guess.begin(), guess.end()), best, residual(static_cast<std::size_t>(n));
+  double best_residual = std::numeric_limits<double>::infinity();
+  for (int pass = 0; pass <= passes; ++pass) {
+    interpolate(psi, out, residual);
+    double largest = 0.0;
+    for (LocalIndex k = 0; k < n; ++k) {
+      const auto s = static_cast<std::size_t>(k);
+      residual[s] = values[s] - residual[s];
+      largest = std::max(largest, residual[s].norm());
+    }
+    // Past the first pass (which gives the momentum), the passes go on while they bring the largest
+    // residual down; the best is kept.
+    if (pass >= 1) {
+      if (!(largest < best_residual)) break;
+      best_residual = largest;
+      best = out;
+    }
+    if (pass == passes) break;
+    for (LocalIndex k = 0; k < n; ++k)
+      spreadImpulse(psi, mass, k, particle_mass[static_cast<std::size_t>(k)] * residual[static_cast<std::size_t>(k)],
+                    out);
+  }
+  return best;
 }
 
 void spreadImpulse(const Table<double>& psi, std::span<const double> mass, LocalIndex k, const Vec3& impulse,

@@ -57,6 +57,9 @@ struct Kernels {
   // Row K's sum of Psi times its images' shifts (x -> R x + t): the particle's position is
   // sum_I Psi_I(X_K) R xhat_I + shift[K]. Empty when every image's shift is zero (symmetry planes).
   std::vector<Vec3> shift;
+  // The points (particles and faces) whose singular moment matrix left them their particle alone
+  // (KernelInput::alone_where_singular).
+  std::size_t fallbacks = 0;
 };
 
 struct KernelInput {
@@ -76,6 +79,20 @@ struct KernelInput {
   // crack's own particles, and of faces between two of its cells or on the surface, see every
   // particle. Images across mirror planes are tested against the crack on this side only.
   std::span<const std::uint8_t> crack = {};
+  // After a kernel update (empty before one): each particle's cell is its first cell mapped affinely by
+  // cell_F[J], the particle's deformation gradient at the update, about its position X_J then. A face of
+  // cell J with first centroid c and area vector a lies at X_J + F_J (c - cell_origin[J]) with area vector
+  // det F_J F_J^-T a, and the cell's volume is det F_J cell_volume[J]. A face two cells share is then two
+  // faces, one per cell: each cell stays closed, and a linear field's smoothed gradient is still exact.
+  std::span<const Mat3> cell_F = {};
+  std::span<const Vec3> cell_origin = {};
+  // Per particle (empty: none): 1 if it stands alone, its values and its cell's faces' values its own
+  // coefficient's only (Psi = 1) and its coefficient in no other row: debris at a kernel update, which
+  // flies on by itself and carries no stress.
+  std::span<const std::uint8_t> alone = {};
+  // At a kernel update, a point whose moment matrix is singular (a few particles left together by
+  // erosion) takes its particle's coefficient alone instead of stopping the run (Kernels::fallbacks).
+  bool alone_where_singular = false;
 };
 
 // Throws kessler::Error naming the body and the position where a moment matrix is singular.
@@ -86,6 +103,18 @@ Kernels buildKernels(const KernelInput& in);
 void interpolate(const Table<double>& psi, std::span<const Vec3> coefficients, std::span<Vec3> out);
 // The same for particle k alone.
 Vec3 valueAt(const Table<double>& psi, std::span<const Vec3> coefficients, LocalIndex k);
+
+// Coefficients whose values at the particles approach `values`, from `guess`: each pass hands the
+// residual's impulses m_K (values_K - sum_I Psi_I(X_K) chat_I) to the coefficients through the shape
+// functions, chat_I += (1 / m_I) sum_K Psi_I(X_K) m_K r_K (the lumped L2 projection of the residual,
+// with the lumped masses m_I = sum_K m_K Psi_I(X_K)). After the first pass the coefficients' momentum
+// sum_I m_I chat_I is the particles' sum_K m_K values_K, and every further pass keeps it. Up to
+// `passes` passes, while each brings the largest residual down (the result of the first is kept in
+// any case): the smooth part of the field converges in a few, a mode from particle to particle, which
+// the kernels average away, is left out rather than reproduced by wildly oscillating coefficients.
+std::vector<Vec3> interpolatingCoefficients(const Table<double>& psi, std::span<const double> particle_mass,
+                                            std::span<const double> mass, std::span<const Vec3> values,
+                                            std::span<const Vec3> guess, int passes);
 
 // An impulse on particle k handed to the coefficients as a force is, through the shape functions:
 // vhat_I += Psi_I(X_k) impulse / m_I (an image's share reflected onto its particle). The

@@ -22,7 +22,9 @@ struct Model : ParticleState {
   // on the body's surface normal to a, not at the particle (VelocityCollocation).
   std::vector<std::uint8_t> constrained;
   std::vector<Vec3> prescribed_v;
-  std::vector<Vec3> reference;      // X_I: the kernels' centres, where the particles started
+  // X_I: the kernels' centres, where the particles were at the last kernel update (at the start, where
+  // they started; docs/theory.md §12, "Kernel updates").
+  std::vector<Vec3> reference;
   std::vector<Vec3> coefficient_x;  // xhat_I
   std::vector<Vec3> coefficient_v;  // vhat_I
   std::vector<double> cell_volume;  // each particle's cell (its nodal integration domain), m^3
@@ -37,6 +39,14 @@ struct Model : ParticleState {
   // Per particle: 1 if it was broken before the first step, a crack the deck or problem made, which
   // no kernel reaches across (KernelInput::crack); empty if none was.
   std::vector<std::uint8_t> crack;
+  // After a kernel update (both empty before one): where the particles started, which the cells (faces,
+  // cell_volume) still describe, and each particle's deformation gradient at the last update, which maps
+  // its first cell onto its cell at the update (KernelInput::cell_F).
+  std::vector<Vec3> origin;
+  std::vector<Mat3> reference_F;
+  // Per particle, after a kernel update: 1 if it was debris then, standing alone in the kernels
+  // (KernelInput::alone); empty before one.
+  std::vector<std::uint8_t> alone;
 };
 
 }  // namespace kessler::rkpm

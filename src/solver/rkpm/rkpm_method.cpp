@@ -42,6 +42,18 @@ void RkpmMethod::check(double initial_total_energy) {
   diagnostics_.check(model_, at, initial_total_energy, rule, driven);
 }
 
+std::vector<std::string> RkpmMethod::notes() const {
+  const KernelUpdates u = integrator_.kernelUpdates();
+  if (u.made == 0 && u.refused == 0) return {};
+  std::vector<std::string> notes{
+      fmt::format("{} kernel updates, {} refused (no usable kernels on the configuration then); the coefficients' "
+                  "kinetic energy they took, booked apart: {:.6g} J (docs/theory.md §12)",
+                  u.made, u.refused, u.energy)};
+  if (!integrator_.lastRefusal().empty())
+    notes.push_back(fmt::format("the last refused kernel update, at {}", integrator_.lastRefusal()));
+  return notes;
+}
+
 NodeCloud RkpmMethod::nodes() const {
   const PointStore& points = model_.points;
   return NodeCloud{points.id,    points.body, model_.coefficient_x, model_.coefficient_v, integrator_.masses(),
@@ -82,6 +94,16 @@ void RkpmMethod::save(StateWriter& out) const {
   for (const std::array<int, 3>& e : model_.element) element.insert(element.end(), e.begin(), e.end());
   out.array("/rkpm/element", element);
   if (!model_.crack.empty()) out.array("/rkpm/crack", model_.crack);
+  if (!model_.reference_F.empty()) {  // after a kernel update
+    out.array("/rkpm/origin", model_.origin);
+    out.array("/rkpm/reference_F", model_.reference_F);
+    out.array("/rkpm/alone", model_.alone);
+  }
+  const KernelUpdates u = integrator_.kernelUpdates();
+  if (u.made > 0 || u.refused > 0) {
+    out.array("/rkpm/kernel_updates", std::vector<std::int64_t>{u.made, u.refused, u.retry_at});
+    out.array("/rkpm/kernel_update_energy", std::vector<double>{u.energy});
+  }
 }
 
 void RkpmMethod::load(const StateReader& in) {
@@ -128,9 +150,26 @@ void RkpmMethod::load(const StateReader& in) {
   // The crack made before the first step, which the kernels do not reach across (none if not saved).
   model_.crack.clear();
   if (in.has("/rkpm/crack")) in.array("/rkpm/crack", model_.crack, n);
+  // The last kernel update's configuration (none if the run made none).
+  model_.origin.clear();
+  model_.reference_F.clear();
+  model_.alone.clear();
+  if (in.has("/rkpm/reference_F")) {
+    in.array("/rkpm/origin", model_.origin, n);
+    in.array("/rkpm/reference_F", model_.reference_F, n);
+    in.array("/rkpm/alone", model_.alone, n);
+  }
+  KernelUpdates updates;
+  if (in.has("/rkpm/kernel_updates")) {
+    std::vector<std::int64_t> counts;
+    std::vector<double> energy;
+    in.array("/rkpm/kernel_updates", counts, 3);
+    in.array("/rkpm/kernel_update_energy", energy, 1);
+    updates = {counts[0], counts[1], counts[2], energy[0]};
+  }
   integrator_.restore(Clock{in.doubleScalar("rkpm_time"), in.intScalar("rkpm_steps"), in.doubleScalar("rkpm_dt_last"),
                             in.doubleScalar("rkpm_dt_next"), in.doubleScalar("rkpm_dt_initial")},
-                      in.doubleScalar("rkpm_contact_energy"));
+                      in.doubleScalar("rkpm_contact_energy"), updates);
 }
 
 }  // namespace kessler::rkpm

@@ -38,7 +38,8 @@ class RkpmMethod final : public Method {
   std::vector<std::pair<std::string, double>> sizes() const override {
     return {{"mean_neighbours", integrator_.meanNeighbours()}};
   }
-  std::vector<std::string> notes() const override { return {}; }
+  // The kernel updates made and refused, if any.
+  std::vector<std::string> notes() const override;
   double stepLength(LocalIndex p) const override { return integrator_.stepLength(p); }
   void save(StateWriter& out) const override;
   void load(const StateReader& in) override;
