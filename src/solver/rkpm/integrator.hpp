@@ -10,7 +10,8 @@
 //      F_J = I + sum_I (xhat_I - X_I) (x) grad~ Psi_I(X_J), and dF = F F_old^-1;
 //   3. the material update (the shared laws, from F, dF and the volume), with the laws' bulk
 //      viscosity under Christensen's limiter;
-//   4. eigenerosion and the release of failed particles as debris (solver/common/);
+//   4. eigenerosion and the release of failed particles as debris (solver/common/), after which a
+//      kernel update lets new debris stand alone;
 //   5. the particles' physical positions and velocities, sum_I Psi_I(X_K) (xhat_I, vhat_I);
 //   6. the forces f_I = -sum_J V0_J P_J grad~ Psi_I(X_J) (P the first Piola-Kirchhoff stress), whose
 //      power is the stress power the laws book, and the stable step.
@@ -83,6 +84,8 @@ class Integrator {
   void place();
   void forces();
   void updateKernels();
+  // Whether a debris particle is still in the kernels (not alone): a kernel update is then due.
+  bool heldDebris() const;
   double coefficientKinetic() const;
   [[noreturn]] void failAtPoint(LocalIndex p, const std::string& what) const;
 

@@ -1,8 +1,8 @@
 // RKPM (solver/rkpm/, docs/theory.md §12): the reproducing kernels' consistency, the singular moment
 // matrix refused, the smoothed gradients' patch test on irregular particles (lattice cells, tet
 // cells, and across a symmetry plane), a crack the kernels do not reach across, velocity collocation,
-// the walls' impulses, linear momentum and kernel updates. The surfaces and the sliding contact are in
-// test_rkpm_contact.cpp.
+// the walls' impulses, linear momentum, kernel updates and debris that leaves the kernels. The
+// surfaces and the sliding contact are in test_rkpm_contact.cpp.
 #include "../blocks.hpp"
 #include "approx/reproducing_kernel.hpp"
 #include "core/error.hpp"
@@ -459,6 +459,60 @@ TEST(Rkpm, KernelUpdatesCarryALinearMotionThrough) {
   EXPECT_LT(dv, 1e-9);      // m/s, of about 1
   EXPECT_LT(dF, 1e-9);
   EXPECT_LT((momentum_a - momentum_b).norm(), 1e-12 * momentum_a.norm());
+}
+
+// A particle that becomes debris leaves the kernels at the next update, at most 20 steps later, with
+// no strain to ask for one: it stands alone (its row its own coefficient, in no other row) and flies on at the velocity
+// it had, and the coefficients keep the particles' momentum (the block's stress conserves it too).
+TEST(Rkpm, DebrisLeavesTheKernelsAtOnce) {
+  Mat3 G;
+  G << -300.0, 80.0, 0.0, 50.0, 200.0, 0.0, 0.0, 0.0, -150.0;
+  Problem problem = latticeBlock();  // aluminium
+  problem.bodies[0].velocity_field = [&](const Vec3& x) { return Vec3(G * x + Vec3(1.0, -2.0, 0.5)); };
+  problem.settings.solver.end_time = 1.0;
+  problem.settings.rkpm.update_strain = 1e9;  // no update for the strain's sake
+  Model model = buildModel(problem);
+  Integrator integrator(model, settingsFor(problem));
+  integrator.initialise();
+  for (int s = 0; s < 3; ++s) integrator.step();
+  PointStore& points = model.points;
+  LocalIndex p = 0;  // the particle nearest the block's middle
+  for (LocalIndex k = 0; k < points.owned; ++k)
+    if ((points.x[k] - Vec3(2.5e-3, 2e-3, 1.5e-3)).norm() < (points.x[p] - Vec3(2.5e-3, 2e-3, 1.5e-3)).norm()) p = k;
+  points.broken[p] = 1;
+  points.carrier[p] = -1;
+  ASSERT_TRUE(points.debris(p));
+  auto momentum = [&] {
+    Vec3 sum = Vec3::Zero();
+    for (LocalIndex k = 0; k < points.owned; ++k) sum += points.mass[k] * points.v[k];
+    return sum;
+  };
+  const Vec3 before = momentum();
+  int steps = 0;  // to the next update: debris updates come every 20 steps
+  while (integrator.kernelUpdates().made == 0 && steps < 20) {
+    integrator.step();
+    ++steps;
+  }
+  EXPECT_EQ(integrator.kernelUpdates().made, 1);
+  EXPECT_EQ(integrator.clock().steps % 20, 0);
+  const Kernels& k = integrator.kernels();
+  EXPECT_EQ(k.psi.offset[p + 1] - k.psi.offset[p], 1);
+  EXPECT_EQ(k.psi.column[static_cast<std::size_t>(k.psi.offset[p])], p);
+  EXPECT_EQ(k.psi.value[static_cast<std::size_t>(k.psi.offset[p])], 1.0);
+  for (LocalIndex r = 0; r < points.owned; ++r) {
+    if (r == p) continue;
+    for (LocalIndex e = k.psi.offset[r]; e < k.psi.offset[r + 1]; ++e)
+      EXPECT_NE(k.psi.column[static_cast<std::size_t>(e)], p) << "row " << r;
+    for (LocalIndex e = k.gradient.offset[r]; e < k.gradient.offset[r + 1]; ++e)
+      EXPECT_NE(k.gradient.column[static_cast<std::size_t>(e)], p) << "row " << r;
+  }
+  EXPECT_LT((momentum() - before).norm(), 1e-12 * before.norm());
+  const Vec3 x0 = points.x[p], v0 = points.v[p];
+  const double t0 = integrator.clock().time;
+  for (int s = 0; s < 25; ++s) integrator.step();
+  EXPECT_EQ(integrator.kernelUpdates().made, 1);  // none more: the debris is alone
+  EXPECT_LT((points.v[p] - v0).norm(), 1e-12 * v0.norm());
+  EXPECT_LT((points.x[p] - x0 - (integrator.clock().time - t0) * v0).norm(), 1e-15);
 }
 
 }  // namespace
