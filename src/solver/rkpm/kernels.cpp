@@ -217,7 +217,12 @@ Kernels buildKernels(const KernelInput& in) {
       in.cell_F.empty() ? in.cell_volume : std::span<const double>(mapped.volume);
   const std::span<const LocalIndex> kept_faces =
       in.cell_F.empty() ? in.kept_faces : std::span<const LocalIndex>(mapped.kept);
-  const double reach = *std::max_element(in.support.begin(), in.support.end());
+  // The search's reach: the largest support of a particle that is in other rows (one standing alone is
+  // in none, and debris, stretched far, would widen every search).
+  double reach = 0.0;
+  for (std::size_t p = 0; p < in.support.size(); ++p)
+    if (in.alone.empty() || !in.alone[p]) reach = std::max(reach, in.support[p]);
+  if (!(reach > 0.0)) reach = *std::max_element(in.support.begin(), in.support.end());
   CellList cells;
   cells.build(in.reference, n, reach);
   const Mirrors mirrors = in.mirrors.any() ? Mirrors(in.mirrors, reach) : Mirrors();
