@@ -90,6 +90,9 @@ void Integrator::prepare() {
   const SurfaceHolds holds = surfaceHolds(model_);
   {
     ScopedPhase phase(timers_, "kernels");
+    // The last kernels go first (a refused update builds them again), so that two sets are never held.
+    kernels_ = Kernels{};
+    transposed_ = Table<Vec3>{};
     kernels_ = buildKernels({model_.reference, points.body, support, points.volume0, model_.cell_volume, model_.faces,
                              names, settings_.mirrors, holds.faces, model_.crack, model_.reference_F, model_.origin,
                              model_.alone, !model_.reference_F.empty()});

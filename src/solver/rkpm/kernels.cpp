@@ -270,40 +270,43 @@ Kernels buildKernels(const KernelInput& in) {
   if (std::any_of(shift.begin(), shift.end(), [](const Vec3& s) { return s != Vec3::Zero(); }))
     k.shift = std::move(shift);
 
-  // The values at the faces' centroids.
+  // The values at the faces' centroids. A face two cells share (before any kernel update) is
+  // evaluated once, first, and kept until both cells have summed it; a face of one cell alone (every
+  // face after an update) is evaluated as its cell sums it, so that all the faces' values are never
+  // held at once.
   const std::size_t faces = all_faces.size();
-  rows.assign(faces, {});
+  auto evaluateFace = [&](Evaluator& e, std::size_t f, Row<double>& r) {
+    const CellFace& face = all_faces[f];
+    const bool inside_crack = cracked(face.inner) && (face.outer < 0 || cracked(face.outer));
+    Vec3 unused;
+    if (lone(face.inner)) {
+      Evaluator::alone(face.inner, r.column, r.mirror, r.value, unused);
+    } else if (!e.at(face.centroid, in.body[face.inner], in.support[face.inner], r.column, r.mirror, r.value, unused,
+                     inside_crack)) {
+      if (in.alone_where_singular) {
+        Evaluator::alone(face.inner, r.column, r.mirror, r.value, unused);
+#pragma omp atomic
+        ++k.fallbacks;
+      } else {
+        fail(static_cast<std::size_t>(n) + f, face.centroid, in.body[face.inner], e.rcond());
+      }
+    }
+  };
+  std::vector<LocalIndex> shared_row(faces, -1);
+  std::vector<std::size_t> shared_faces;
+  for (std::size_t f = 0; f < faces; ++f)
+    if (all_faces[f].outer >= 0) {
+      shared_row[f] = static_cast<LocalIndex>(shared_faces.size());
+      shared_faces.push_back(f);
+    }
+  rows.assign(shared_faces.size(), {});
 #pragma omp parallel
   {
     Evaluator e(in, cells, mirrors, crack, reach);
-    Vec3 unused;
 #pragma omp for schedule(dynamic, 256)
-    for (std::size_t f = 0; f < faces; ++f) {
-      const CellFace& face = all_faces[f];
-      Row<double>& r = rows[f];
-      const bool inside_crack = cracked(face.inner) && (face.outer < 0 || cracked(face.outer));
-      if (lone(face.inner)) {
-        Evaluator::alone(face.inner, r.column, r.mirror, r.value, unused);
-      } else if (!e.at(face.centroid, in.body[face.inner], in.support[face.inner], r.column, r.mirror, r.value, unused,
-                       inside_crack)) {
-        if (in.alone_where_singular) {
-          Evaluator::alone(face.inner, r.column, r.mirror, r.value, unused);
-#pragma omp atomic
-          ++k.fallbacks;
-        } else {
-          fail(static_cast<std::size_t>(n) + f, face.centroid, in.body[face.inner], e.rcond());
-        }
-      }
-    }
+    for (std::size_t r = 0; r < shared_faces.size(); ++r) evaluateFace(e, shared_faces[r], rows[r]);
   }
-  if (failure.at != std::numeric_limits<std::size_t>::max()) {
-    const Vec3 mm = 1e3 * failure.x;
-    throw Error(fmt::format(
-        "RKPM: the reproducing kernel's moment matrix is singular at ({:.4g}, {:.4g}, {:.4g}) mm in body '{}' "
-        "(reciprocal condition {:.2g}): fewer than four particles not in one plane reach it (docs/theory.md §12)",
-        mm.x(), mm.y(), mm.z(), in.bodies[static_cast<std::size_t>(failure.body)], failure.rcond));
-  }
-  const Table<double> at_faces = flatten(rows);
+  const Table<double> shared = flatten(rows);
 
   // Each cell's faces.
   std::vector<LocalIndex> first(static_cast<std::size_t>(n) + 1, 0), cell_faces;
@@ -321,6 +324,10 @@ Kernels buildKernels(const KernelInput& in) {
         cell_faces[static_cast<std::size_t>(cursor[all_faces[f].outer]++)] = static_cast<LocalIndex>(f);
     }
   }
+  std::vector<LocalIndex> kept_row(faces, -1);
+  for (std::size_t r = 0; r < kept_faces.size(); ++r)
+    kept_row[static_cast<std::size_t>(kept_faces[r])] = static_cast<LocalIndex>(r);
+  std::vector<Row<double>> kept(kept_faces.size());
 
   // The smoothed gradients: each cell's faces' values, summed per entry (particle, then mirror).
   std::vector<Row<Vec3>> gradients(static_cast<std::size_t>(n));
@@ -331,17 +338,37 @@ Kernels buildKernels(const KernelInput& in) {
       Vec3 value;
     };
     std::vector<Term> terms;
-#pragma omp for schedule(dynamic, 256)
+    Evaluator e(in, cells, mirrors, crack, reach);
+    Row<double> own;
+    auto add = [&](const Vec3& area, std::span<const LocalIndex> column, std::span<const std::uint8_t> mirror,
+                   std::span<const double> value) {
+      for (std::size_t slot = 0; slot < column.size(); ++slot)
+        terms.push_back({8 * static_cast<std::int64_t>(column[slot]) + mirror[slot], value[slot] * area});
+    };
+#pragma omp for schedule(dynamic, 64)
     for (LocalIndex j = 0; j < n; ++j) {
       terms.clear();
       for (LocalIndex s = first[j]; s < first[j + 1]; ++s) {
         const auto f = static_cast<std::size_t>(cell_faces[static_cast<std::size_t>(s)]);
         const Vec3 area = all_faces[f].inner == j ? all_faces[f].area : Vec3(-all_faces[f].area);
-        for (LocalIndex e = at_faces.offset[f]; e < at_faces.offset[f + 1]; ++e) {
-          const auto slot = static_cast<std::size_t>(e);
-          terms.push_back({8 * static_cast<std::int64_t>(at_faces.column[slot]) + at_faces.mirror[slot],
-                           at_faces.value[slot] * area});
+        Row<double>* row = nullptr;
+        if (shared_row[f] >= 0) {
+          const auto r = static_cast<LocalIndex>(shared_row[f]);
+          const auto b = static_cast<std::size_t>(shared.offset[r]),
+                     size = static_cast<std::size_t>(shared.offset[r + 1]) - b;
+          add(area, std::span(shared.column).subspan(b, size), std::span(shared.mirror).subspan(b, size),
+              std::span(shared.value).subspan(b, size));
+          if (kept_row[f] >= 0 && all_faces[f].inner == j) {
+            row = &kept[static_cast<std::size_t>(kept_row[f])];
+            row->column.assign(shared.column.begin() + b, shared.column.begin() + b + size);
+            row->mirror.assign(shared.mirror.begin() + b, shared.mirror.begin() + b + size);
+            row->value.assign(shared.value.begin() + b, shared.value.begin() + b + size);
+          }
+          continue;
         }
+        row = kept_row[f] >= 0 ? &kept[static_cast<std::size_t>(kept_row[f])] : &own;
+        evaluateFace(e, f, *row);
+        add(area, row->column, row->mirror, row->value);
       }
       // Stable: each entry's terms are summed in the order of the cell's faces.
       std::stable_sort(terms.begin(), terms.end(), [](const Term& a, const Term& b) { return a.key < b.key; });
@@ -357,18 +384,14 @@ Kernels buildKernels(const KernelInput& in) {
       }
     }
   }
-  k.gradient = flatten(gradients);
-
-  std::vector<Row<double>> kept(kept_faces.size());
-  for (std::size_t r = 0; r < kept.size(); ++r) {
-    const auto f = static_cast<std::size_t>(kept_faces[r]);
-    for (LocalIndex e = at_faces.offset[f]; e < at_faces.offset[f + 1]; ++e) {
-      const auto slot = static_cast<std::size_t>(e);
-      kept[r].column.push_back(at_faces.column[slot]);
-      kept[r].mirror.push_back(at_faces.mirror[slot]);
-      kept[r].value.push_back(at_faces.value[slot]);
-    }
+  if (failure.at != std::numeric_limits<std::size_t>::max()) {
+    const Vec3 mm = 1e3 * failure.x;
+    throw Error(fmt::format(
+        "RKPM: the reproducing kernel's moment matrix is singular at ({:.4g}, {:.4g}, {:.4g}) mm in body '{}' "
+        "(reciprocal condition {:.2g}): fewer than four particles not in one plane reach it (docs/theory.md §12)",
+        mm.x(), mm.y(), mm.z(), in.bodies[static_cast<std::size_t>(failure.body)], failure.rcond));
   }
+  k.gradient = flatten(gradients);
   k.at_faces = flatten(kept);
   return k;
 }
