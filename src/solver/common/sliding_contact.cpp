@@ -18,7 +18,7 @@ struct Near {
   double depth = 0.0;              // the slave's height above the triangle's plane less the gaps (< 0: below)
   double longest = 0.0;            // the triangle's longest edge
   std::array<double, 3> weight{};  // barycentric coordinates of the slave's projection
-  double distance = 0.0;           // from the slave to the nearest point of the triangle
+  double distance = 0.0;           // from the slave to the triangle (infinite where it cannot be the nearest)
   bool over = false;               // the projection lies on the triangle
 };
 
@@ -49,19 +49,28 @@ SlidingReport SlidingContact::apply(const ContactSurface& surface, const Sliding
   if (triangles.empty() || surface.slaves.empty()) return report;
   const auto y = [&c](LocalIndex a) -> Vec3 { return c.x[a] + c.du[a]; };
 
-  // The triangles binned by their centroids at the step's start positions plus displacement; every
-  // point of a triangle lies within its longest edge of its centroid.
-  std::vector<Vec3> centre(triangles.size());
+  // The triangles binned by their centroids at the step's start positions plus displacement, each
+  // body's apart (a slave looks only among the other bodies'); every point of a triangle lies within
+  // its longest edge of its centroid.
+  struct Binned {
+    std::vector<Vec3> centre;
+    std::vector<LocalIndex> triangle;
+    CellList cells;
+  };
+  std::vector<Binned> binned;
   double longest = 0.0;
   for (std::size_t t = 0; t < triangles.size(); ++t) {
     const auto& v = triangles[t];
     const Vec3 a = y(v[0]), b = y(v[1]), d = y(v[2]);
-    centre[t] = (a + b + d) / 3.0;
+    const auto body = static_cast<std::size_t>(c.body[v[0]]);
+    if (binned.size() <= body) binned.resize(body + 1);
+    binned[body].centre.push_back((a + b + d) / 3.0);
+    binned[body].triangle.push_back(static_cast<LocalIndex>(t));
     longest = std::max({longest, (b - a).norm(), (d - b).norm(), (a - d).norm()});
   }
   if (!(longest > 0.0)) return report;
-  CellList cells;
-  cells.build(centre, static_cast<LocalIndex>(centre.size()), longest);
+  for (Binned& b : binned)
+    if (!b.centre.empty()) b.cells.build(b.centre, static_cast<LocalIndex>(b.centre.size()), longest);
   // A face contact lies within the triangle's longest edge of the slave; an edge contact's vertex
   // within the longest edge, and the triangles around it within two of their centroids.
   const double reach = 2.0 * longest;
@@ -100,9 +109,8 @@ SlidingReport SlidingContact::apply(const ContactSurface& surface, const Sliding
     for (const LocalIndex s : slaves) {
       const Vec3 ys = y(s);
       near.clear();
-      cells.forEachWithin(ys, reach, [&](LocalIndex t, double) {
+      const auto visit_triangle = [&](LocalIndex t) {
         const auto& v = triangles[static_cast<std::size_t>(t)];
-        if (c.body[v[0]] == c.body[s]) return;
         for (const LocalIndex a : v)
           if (!(c.mass[a] > 0.0)) return;
         const Vec3 a = y(v[0]), b = y(v[1]), d = y(v[2]);
@@ -122,11 +130,29 @@ SlidingReport SlidingContact::apply(const ContactSurface& surface, const Sliding
                                    : height - (c.gap[s] + item.weight[0] * c.gap[v[0]] + item.weight[1] * c.gap[v[1]] +
                                                item.weight[2] * c.gap[v[2]]);
         item.over = *std::min_element(item.weight.begin(), item.weight.end()) >= -1e-12;
-        item.distance =
-            item.over ? std::abs(height)
-                      : std::min({segmentDistance(ys, a, b), segmentDistance(ys, b, d), segmentDistance(ys, d, a)});
+        item.distance = std::abs(height);  // the distance if over, else a lower bound of it
         near.push_back(item);
-      });
+      };
+      for (std::size_t b = 0; b < binned.size(); ++b)
+        if (static_cast<std::int32_t>(b) != c.body[s] && !binned[b].centre.empty())
+          binned[b].cells.forEachWithin(ys, reach,
+                                        [&](LocalIndex i, double) { visit_triangle(binned[b].triangle[i]); });
+      // A triangle the slave is not over lies at least its plane's distance away: one no nearer than a
+      // triangle the slave is over cannot be the nearest (an over one wins a tie), and its distance to
+      // the edges is not needed.
+      double over_nearest = std::numeric_limits<double>::infinity();
+      for (const Near& item : near)
+        if (item.over) over_nearest = std::min(over_nearest, item.distance);
+      for (Near& item : near) {
+        if (item.over) continue;
+        if (item.distance >= over_nearest) {
+          item.distance = std::numeric_limits<double>::infinity();
+          continue;
+        }
+        const auto& v = triangles[static_cast<std::size_t>(item.triangle)];
+        const Vec3 a = y(v[0]), b = y(v[1]), d = y(v[2]);
+        item.distance = std::min({segmentDistance(ys, a, b), segmentDistance(ys, b, d), segmentDistance(ys, d, a)});
+      }
       if (near.empty()) continue;
 
       // The nearest master triangle decides (on ties, one the slave lies over): a face contact if the
