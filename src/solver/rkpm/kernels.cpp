@@ -81,13 +81,60 @@ class Crack {
   double radius_ = 0.0;
 };
 
+// The search for the particles whose support reaches a point. Most supports lie near one value, and
+// a few, stretched with their particles' F at a kernel update, far beyond it (in the rod deck up to
+// five times the median): searching for every particle within the largest would scan most of the
+// model for each point. So the particles whose support exceeds the 99th percentile are binned apart
+// and searched within the largest, the others within the percentile.
+class Search {
+ public:
+  Search(const KernelInput& in, double reach) : support_(in.support), reach_(reach), common_(reach) {
+    std::vector<double> held;
+    for (std::size_t p = 0; p < in.support.size(); ++p)
+      if (in.alone.empty() || !in.alone[p]) held.push_back(in.support[p]);
+    if (!held.empty()) {
+      const auto at = held.begin() + static_cast<std::ptrdiff_t>((held.size() - 1) * 99 / 100);
+      std::nth_element(held.begin(), at, held.end());
+      if (*at > 0.0) common_ = std::min(reach, *at);
+    }
+    cells_.build(in.reference, static_cast<LocalIndex>(in.reference.size()), common_);
+    if (common_ < reach) {
+      for (std::size_t p = 0; p < in.support.size(); ++p)
+        if (in.support[p] > common_ && (in.alone.empty() || !in.alone[p])) {
+          wide_.push_back(static_cast<LocalIndex>(p));
+          wide_x_.push_back(in.reference[p]);
+        }
+      wide_cells_.build(wide_x_, static_cast<LocalIndex>(wide_x_.size()), reach);
+    }
+  }
+  // Calls f(i, squared distance) for every particle i whose support may reach q (a superset).
+  template <class F>
+  void forEachReaching(const Vec3& q, F&& f) const {
+    if (wide_.empty()) {
+      cells_.forEachWithin(q, common_, f);
+      return;
+    }
+    cells_.forEachWithin(q, common_, [&](LocalIndex i, double d2) {
+      if (support_[static_cast<std::size_t>(i)] <= common_) f(i, d2);
+    });
+    wide_cells_.forEachWithin(q, reach_, [&](LocalIndex w, double d2) { f(wide_[static_cast<std::size_t>(w)], d2); });
+  }
+
+ private:
+  std::span<const double> support_;
+  double reach_, common_;
+  CellList cells_, wide_cells_;
+  std::vector<LocalIndex> wide_;
+  std::vector<Vec3> wide_x_;
+};
+
 // The kernel values at one point of body `body`, as (particle, mirror, value) entries: the particles
 // in the search's order, then each image (in the order of its code) in the same order; `shift` is
 // the sum of the values times their images' shifts.
 class Evaluator {
  public:
-  Evaluator(const KernelInput& in, const CellList& cells, const Mirrors& mirrors, const Crack& crack, double reach)
-      : in_(in), cells_(cells), mirrors_(mirrors), crack_(crack), reach_(reach) {}
+  Evaluator(const KernelInput& in, const Search& search, const Mirrors& mirrors, const Crack& crack, double reach)
+      : in_(in), search_(search), mirrors_(mirrors), crack_(crack), reach_(reach) {}
 
   // False where the moment matrix is singular (rcond() then says how nearly). With `seen_past_crack`
   // the crack hides nothing from x.
@@ -103,7 +150,7 @@ class Evaluator {
       crack_.near(x, near_crack_);
     mirrors_.near(x, reach_, [&](std::uint8_t m) {
       // The image T X_i of particle i seen from x is i seen from T^-1 x: |x - T X_i| = |T^-1 x - X_i|.
-      cells_.forEachWithin(mirrors_.point(x, mirrors_.inverse(m)), reach_, [&](LocalIndex i, double d2) {
+      search_.forEachReaching(mirrors_.point(x, mirrors_.inverse(m)), [&](LocalIndex i, double d2) {
         if (in_.body[i] != body || d2 >= in_.support[i] * in_.support[i]) return;
         if (!in_.alone.empty() && in_.alone[static_cast<std::size_t>(i)]) return;
         if (!near_crack_.empty() && crack_.hides(x, mirrors_.point(in_.reference[i], m), near_crack_)) return;
@@ -133,7 +180,7 @@ class Evaluator {
 
  private:
   const KernelInput& in_;
-  const CellList& cells_;
+  const Search& search_;
   const Mirrors& mirrors_;
   const Crack& crack_;
   double reach_;
@@ -223,8 +270,7 @@ Kernels buildKernels(const KernelInput& in) {
   for (std::size_t p = 0; p < in.support.size(); ++p)
     if (in.alone.empty() || !in.alone[p]) reach = std::max(reach, in.support[p]);
   if (!(reach > 0.0)) reach = *std::max_element(in.support.begin(), in.support.end());
-  CellList cells;
-  cells.build(in.reference, n, reach);
+  const Search search(in, reach);
   const Mirrors mirrors = in.mirrors.any() ? Mirrors(in.mirrors, reach) : Mirrors();
   const Crack crack(in, all_faces, reach);
   auto cracked = [&](LocalIndex p) { return !in.crack.empty() && in.crack[static_cast<std::size_t>(p)] != 0; };
@@ -248,7 +294,7 @@ Kernels buildKernels(const KernelInput& in) {
   std::vector<Vec3> shift(static_cast<std::size_t>(n));
 #pragma omp parallel
   {
-    Evaluator e(in, cells, mirrors, crack, reach);
+    Evaluator e(in, search, mirrors, crack, reach);
 #pragma omp for schedule(dynamic, 256)
     for (LocalIndex p = 0; p < n; ++p) {
       Row<double>& r = rows[static_cast<std::size_t>(p)];
@@ -302,7 +348,7 @@ Kernels buildKernels(const KernelInput& in) {
   rows.assign(shared_faces.size(), {});
 #pragma omp parallel
   {
-    Evaluator e(in, cells, mirrors, crack, reach);
+    Evaluator e(in, search, mirrors, crack, reach);
 #pragma omp for schedule(dynamic, 256)
     for (std::size_t r = 0; r < shared_faces.size(); ++r) evaluateFace(e, shared_faces[r], rows[r]);
   }
@@ -338,7 +384,7 @@ Kernels buildKernels(const KernelInput& in) {
       Vec3 value;
     };
     std::vector<Term> terms;
-    Evaluator e(in, cells, mirrors, crack, reach);
+    Evaluator e(in, search, mirrors, crack, reach);
     Row<double> own;
     auto add = [&](const Vec3& area, std::span<const LocalIndex> column, std::span<const std::uint8_t> mirror,
                    std::span<const double> value) {
