@@ -196,6 +196,50 @@ TEST(Rkpm, PatchTestOnTetCells) {
   EXPECT_LT(worst_gradient, 1e-10);
 }
 
+// A few supports stretched far beyond the rest (as after kernel updates) are searched apart from the
+// others (kernels.cpp, Search): every row still holds exactly the particles whose support reaches it,
+// and the kernels still reproduce a linear field.
+TEST(Rkpm, StretchedSupportsReachEveryPointTheyCover) {
+  const geometry::Discretisation d =
+      geometry::discretise(geometry::structuredBoxMesh(geometry::Box{Vec3::Zero(), Vec3(6e-3, 4e-3, 4e-3)}, {6, 4, 4}));
+  std::vector<CellFace> faces;
+  for (const geometry::TetFace& t : d.faces) {
+    const Vec3 &a = d.nodes[t.nodes[0]], &b = d.nodes[t.nodes[1]], &c = d.nodes[t.nodes[2]];
+    faces.push_back(
+        {.area = 0.5 * (b - a).cross(c - a), .centroid = (a + b + c) / 3.0, .inner = t.inner, .outer = t.outer});
+  }
+  std::vector<double> support;
+  for (const double v : d.volumes) support.push_back(2.0 * std::cbrt(v));
+  const double common = *std::max_element(support.begin(), support.end());
+  // Fewer than one particle in a hundred, each reaching four times as far.
+  const std::vector<std::size_t> stretched{0, d.points.size() / 2};
+  ASSERT_LT(100 * stretched.size(), d.points.size());
+  for (const std::size_t p : stretched) support[p] *= 4.0;
+  const std::vector<int> body(d.points.size(), 0);
+  const std::vector<std::string> names{"block"};
+  const Kernels k = buildKernels({d.points, body, support, d.volumes, d.volumes, faces, names, MirrorBox{}});
+  long beyond = 0;  // entries of a stretched particle farther than any other support reaches
+  const Vec3 shift(1e-3, -2e-3, 0.5e-3);
+  const Mat3 G = Vec3(0.1, -0.05, 0.02).asDiagonal();
+  for (std::size_t q = 0; q < d.points.size(); ++q) {
+    std::vector<LocalIndex> expected, found;
+    for (std::size_t i = 0; i < d.points.size(); ++i)
+      if ((d.points[q] - d.points[i]).norm() < support[i]) expected.push_back(static_cast<LocalIndex>(i));
+    Vec3 value = Vec3::Zero();
+    for (LocalIndex e = k.psi.offset[q]; e < k.psi.offset[q + 1]; ++e) {
+      const auto slot = static_cast<std::size_t>(e);
+      const auto i = static_cast<std::size_t>(k.psi.column[slot]);
+      found.push_back(k.psi.column[slot]);
+      value += k.psi.value[slot] * (G * d.points[i] + shift);
+      if ((d.points[q] - d.points[i]).norm() >= common) ++beyond;
+    }
+    std::sort(found.begin(), found.end());
+    EXPECT_EQ(found, expected) << "row " << q;
+    EXPECT_LT((value - (G * d.points[q] + shift)).norm(), 1e-15) << "row " << q;
+  }
+  EXPECT_GT(beyond, 0);
+}
+
 TEST(Rkpm, PatchTestAcrossSymmetryPlanes) {
   // A field the mirror images share (u_x odd in x and even in y, u_y the other way, u_z even in both):
   // a diagonal gradient.
