@@ -399,7 +399,7 @@ Kernels buildKernels(const KernelInput& in) {
         const Vec3 area = all_faces[f].inner == j ? all_faces[f].area : Vec3(-all_faces[f].area);
         Row<double>* row = nullptr;
         if (shared_row[f] >= 0) {
-          const auto r = static_cast<LocalIndex>(shared_row[f]);
+          const LocalIndex r = shared_row[f];
           const auto b = static_cast<std::size_t>(shared.offset[r]),
                      size = static_cast<std::size_t>(shared.offset[r + 1]) - b;
           add(area, std::span(shared.column).subspan(b, size), std::span(shared.mirror).subspan(b, size),
