@@ -164,6 +164,17 @@ TEST(Rkpm, KernelsDoNotReachAcrossACrack) {
   expectPatchTest(problem, model, G, Vec3(1e-3, 2e-3, 3e-3), crack);
 }
 
+// A tet mesh's faces as cell faces, the tetrahedra as the cells.
+std::vector<CellFace> tetCellFaces(const geometry::Discretisation& d) {
+  std::vector<CellFace> faces;
+  for (const geometry::TetFace& t : d.faces) {
+    const Vec3 &a = d.nodes[t.nodes[0]], &b = d.nodes[t.nodes[1]], &c = d.nodes[t.nodes[2]];
+    faces.push_back(
+        {.area = 0.5 * (b - a).cross(c - a), .centroid = (a + b + c) / 3.0, .inner = t.inner, .outer = t.outer});
+  }
+  return faces;
+}
+
 // The smoothed gradients hold for any closed cells, not only a lattice's: the kernels built directly
 // on a tet mesh's barycentres with the tetrahedra as cells (a problem's bodies are lattices:
 // setup.cpp) pass the patch test too.
@@ -172,12 +183,7 @@ TEST(Rkpm, PatchTestOnTetCells) {
   G << 0.1, -0.03, 0.02, 0.05, -0.08, 0.01, -0.04, 0.06, 0.03;
   const geometry::Discretisation d =
       geometry::discretise(geometry::structuredBoxMesh(geometry::Box{Vec3::Zero(), Vec3(4e-3, 3e-3, 3e-3)}, {4, 3, 3}));
-  std::vector<CellFace> faces;
-  for (const geometry::TetFace& t : d.faces) {
-    const Vec3 &a = d.nodes[t.nodes[0]], &b = d.nodes[t.nodes[1]], &c = d.nodes[t.nodes[2]];
-    faces.push_back(
-        {.area = 0.5 * (b - a).cross(c - a), .centroid = (a + b + c) / 3.0, .inner = t.inner, .outer = t.outer});
-  }
+  const std::vector<CellFace> faces = tetCellFaces(d);
   std::vector<double> support;
   for (const double v : d.volumes) support.push_back(2.0 * std::cbrt(v));
   const std::vector<int> body(d.points.size(), 0);
@@ -202,12 +208,7 @@ TEST(Rkpm, PatchTestOnTetCells) {
 TEST(Rkpm, StretchedSupportsReachEveryPointTheyCover) {
   const geometry::Discretisation d =
       geometry::discretise(geometry::structuredBoxMesh(geometry::Box{Vec3::Zero(), Vec3(6e-3, 4e-3, 4e-3)}, {6, 4, 4}));
-  std::vector<CellFace> faces;
-  for (const geometry::TetFace& t : d.faces) {
-    const Vec3 &a = d.nodes[t.nodes[0]], &b = d.nodes[t.nodes[1]], &c = d.nodes[t.nodes[2]];
-    faces.push_back(
-        {.area = 0.5 * (b - a).cross(c - a), .centroid = (a + b + c) / 3.0, .inner = t.inner, .outer = t.outer});
-  }
+  const std::vector<CellFace> faces = tetCellFaces(d);
   std::vector<double> support;
   for (const double v : d.volumes) support.push_back(2.0 * std::cbrt(v));
   const double common = *std::max_element(support.begin(), support.end());
