@@ -58,22 +58,35 @@ SlidingReport SlidingContact::apply(const ContactSurface& surface, const Sliding
     CellList cells;
   };
   std::vector<Binned> binned;
-  double longest = 0.0;
+  std::vector<double> radius(triangles.size());  // the farthest vertex from the centroid
+  double longest = 0.0, widest = 0.0;
   for (std::size_t t = 0; t < triangles.size(); ++t) {
     const auto& v = triangles[t];
     const Vec3 a = y(v[0]), b = y(v[1]), d = y(v[2]);
     const auto body = static_cast<std::size_t>(c.body[v[0]]);
     if (binned.size() <= body) binned.resize(body + 1);
-    binned[body].centre.push_back((a + b + d) / 3.0);
+    const Vec3 centre = (a + b + d) / 3.0;
+    binned[body].centre.push_back(centre);
     binned[body].triangle.push_back(static_cast<LocalIndex>(t));
     longest = std::max({longest, (b - a).norm(), (d - b).norm(), (a - d).norm()});
+    radius[t] = std::max({(a - centre).norm(), (b - centre).norm(), (d - centre).norm()});
+    widest = std::max(widest, radius[t]);
   }
   if (!(longest > 0.0)) return report;
   for (Binned& b : binned)
     if (!b.centre.empty()) b.cells.build(b.centre, static_cast<LocalIndex>(b.centre.size()), longest);
-  // A face contact lies within the triangle's longest edge of the slave; an edge contact's vertex
-  // within the longest edge, and the triangles around it within two of their centroids.
-  const double reach = 2.0 * longest;
+  // Only triangles within `decisive` of a slave decide what it meets. A face contact lies within
+  // the larger of its triangle's longest edge and the two gaps (at most twice the widest, the
+  // barycentric weights summing to one), an edge contact's vertex within the longest edge, and
+  // the triangles around that vertex contain it. Where none lies so near, the slave meets
+  // nothing, whichever triangles farther off are found. A triangle lies no nearer than its
+  // centroid's distance less its radius; the others are passed over unevaluated, and the rest
+  // are met in the same order, so the choice is the same as among every triangle within two
+  // longest edges of the slave, the reach that bounds the search.
+  double gap = 0.0;
+  for (const double g : c.gap) gap = std::max(gap, g);
+  const double decisive = std::max(longest, 2.0 * gap) * (1.0 + 1e-9);
+  const double reach = std::min(2.0 * longest, decisive + widest);
 
   // The slaves that may meet another body's triangle: within reach of that body's triangles' box,
   // with a margin of two longest edges for what the corrections move. The others are passed over in
@@ -135,8 +148,11 @@ SlidingReport SlidingContact::apply(const ContactSurface& surface, const Sliding
       };
       for (std::size_t b = 0; b < binned.size(); ++b)
         if (static_cast<std::int32_t>(b) != c.body[s] && !binned[b].centre.empty())
-          binned[b].cells.forEachWithin(ys, reach,
-                                        [&](LocalIndex i, double) { visit_triangle(binned[b].triangle[i]); });
+          binned[b].cells.forEachWithin(ys, reach, [&](LocalIndex i, double squared) {
+            const LocalIndex t = binned[b].triangle[i];
+            const double within = decisive + radius[static_cast<std::size_t>(t)];
+            if (squared <= within * within) visit_triangle(t);
+          });
       // A triangle the slave is not over lies at least its plane's distance away: one no nearer than a
       // triangle the slave is over cannot be the nearest (an over one wins a tie), and its distance to
       // the edges is not needed.
