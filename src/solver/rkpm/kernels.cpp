@@ -379,11 +379,21 @@ Kernels buildKernels(const KernelInput& in) {
   std::vector<Row<Vec3>> gradients(static_cast<std::size_t>(n));
 #pragma omp parallel
   {
+    // The cell's terms, as its faces give them, then summed per entry, found by column through `head`
+    // (one chain per column, an entry per mirror): each entry's terms are added in the order of the
+    // cell's faces.
     struct Term {
       std::int64_t key;  // 8 particle + mirror
       Vec3 value;
     };
+    struct Entry {
+      std::int64_t key;
+      Vec3 sum;
+      LocalIndex next;  // the column's next entry, or -1
+    };
     std::vector<Term> terms;
+    std::vector<Entry> entries;
+    std::vector<LocalIndex> head(static_cast<std::size_t>(n), -1), order;
     Evaluator e(in, search, mirrors, crack, reach);
     Row<double> own;
     auto add = [&](const Vec3& area, std::span<const LocalIndex> column, std::span<const std::uint8_t> mirror,
@@ -394,6 +404,7 @@ Kernels buildKernels(const KernelInput& in) {
 #pragma omp for schedule(dynamic, 64)
     for (LocalIndex j = 0; j < n; ++j) {
       terms.clear();
+      entries.clear();
       for (LocalIndex s = first[j]; s < first[j + 1]; ++s) {
         const auto f = static_cast<std::size_t>(cell_faces[static_cast<std::size_t>(s)]);
         const Vec3 area = all_faces[f].inner == j ? all_faces[f].area : Vec3(-all_faces[f].area);
@@ -416,17 +427,35 @@ Kernels buildKernels(const KernelInput& in) {
         evaluateFace(e, f, *row);
         add(area, row->column, row->mirror, row->value);
       }
-      // Stable: each entry's terms are summed in the order of the cell's faces.
-      std::stable_sort(terms.begin(), terms.end(), [](const Term& a, const Term& b) { return a.key < b.key; });
+      for (const Term& term : terms) {
+        LocalIndex& chain = head[static_cast<std::size_t>(term.key / 8)];
+        LocalIndex at = chain;
+        while (at >= 0 && entries[static_cast<std::size_t>(at)].key != term.key)
+          at = entries[static_cast<std::size_t>(at)].next;
+        if (at < 0) {
+          at = static_cast<LocalIndex>(entries.size());
+          entries.push_back({term.key, Vec3::Zero(), chain});
+          chain = at;
+        }
+        entries[static_cast<std::size_t>(at)].sum += term.value;
+      }
+      // The row's entries by key.
+      order.resize(entries.size());
+      for (std::size_t i = 0; i < entries.size(); ++i) order[i] = static_cast<LocalIndex>(i);
+      std::sort(order.begin(), order.end(), [&](LocalIndex a, LocalIndex b) {
+        return entries[static_cast<std::size_t>(a)].key < entries[static_cast<std::size_t>(b)].key;
+      });
       Row<Vec3>& row = gradients[static_cast<std::size_t>(j)];
       const double inv = 1.0 / cell_volume[j];
-      for (std::size_t t = 0; t < terms.size();) {
-        Vec3 sum = Vec3::Zero();
-        const std::int64_t key = terms[t].key;
-        for (; t < terms.size() && terms[t].key == key; ++t) sum += terms[t].value;
-        row.column.push_back(static_cast<LocalIndex>(key / 8));
-        row.mirror.push_back(static_cast<std::uint8_t>(key % 8));
-        row.value.push_back(inv * sum);
+      row.column.reserve(entries.size());
+      row.mirror.reserve(entries.size());
+      row.value.reserve(entries.size());
+      for (const LocalIndex i : order) {
+        const Entry& entry = entries[static_cast<std::size_t>(i)];
+        row.column.push_back(static_cast<LocalIndex>(entry.key / 8));
+        row.mirror.push_back(static_cast<std::uint8_t>(entry.key % 8));
+        row.value.push_back(inv * entry.sum);
+        head[static_cast<std::size_t>(entry.key / 8)] = -1;
       }
     }
   }
