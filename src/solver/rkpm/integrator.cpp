@@ -440,11 +440,10 @@ void Integrator::updateMaterials(double dt) {
 
 // The particles where their coefficients put them.
 void Integrator::place() {
-  interpolate(kernels_.psi, model_.coefficient_x, model_.points.x);
+  interpolate(kernels_.psi, model_.coefficient_x, model_.coefficient_v, model_.points.x, model_.points.v);
   if (!kernels_.shift.empty())
     for (LocalIndex k = 0; k < model_.points.owned; ++k)
       model_.points.x[k] += kernels_.shift[static_cast<std::size_t>(k)];
-  interpolate(kernels_.psi, model_.coefficient_v, model_.points.v);
 }
 
 void Integrator::forces() {

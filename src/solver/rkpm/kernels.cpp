@@ -486,6 +486,23 @@ void interpolate(const Table<double>& psi, std::span<const Vec3> coefficients, s
   for (LocalIndex k = 0; k < n; ++k) out[k] = valueAt(psi, coefficients, k);
 }
 
+void interpolate(const Table<double>& psi, std::span<const Vec3> a, std::span<const Vec3> b, std::span<Vec3> out_a,
+                 std::span<Vec3> out_b) {
+  const LocalIndex n = psi.rows();
+#pragma omp parallel for schedule(static)
+  for (LocalIndex k = 0; k < n; ++k) {
+    Vec3 sum_a = Vec3::Zero(), sum_b = Vec3::Zero();
+    for (LocalIndex e = psi.offset[k]; e < psi.offset[k + 1]; ++e) {
+      const auto slot = static_cast<std::size_t>(e);
+      const auto i = static_cast<std::size_t>(psi.column[slot]);
+      sum_a += psi.value[slot] * reflect(a[i], psi.mirror[slot]);
+      sum_b += psi.value[slot] * reflect(b[i], psi.mirror[slot]);
+    }
+    out_a[k] = sum_a;
+    out_b[k] = sum_b;
+  }
+}
+
 std::vector<Vec3> interpolatingCoefficients(const Table<double>& psi, std::span<const double> particle_mass,
                                             std::span<const double> mass, std::span<const Vec3> values,
                                             std::span<const Vec3> guess, int passes) {

@@ -101,6 +101,10 @@ Kernels buildKernels(const KernelInput& in);
 // The particles' values from the coefficients, out_K = sum_I Psi_I(X_K) chat_I (an image's
 // coefficient reflected): their velocities from vhat, and with Kernels::shift their positions.
 void interpolate(const Table<double>& psi, std::span<const Vec3> coefficients, std::span<Vec3> out);
+// Two fields at once (positions and velocities), the table read once: out_a, out_b as interpolate
+// gives them.
+void interpolate(const Table<double>& psi, std::span<const Vec3> a, std::span<const Vec3> b, std::span<Vec3> out_a,
+                 std::span<Vec3> out_b);
 // The same for particle k alone.
 Vec3 valueAt(const Table<double>& psi, std::span<const Vec3> coefficients, LocalIndex k);
 
