@@ -76,7 +76,7 @@ SlidingReport SlidingContact::apply(const ContactSurface& surface, const Sliding
   for (Binned& b : binned)
     if (!b.centre.empty()) b.cells.build(b.centre, static_cast<LocalIndex>(b.centre.size()), longest);
   // Only triangles within `decisive` of a slave decide what it meets. A face contact lies within
-  // the larger of its triangle's longest edge and the two gaps (at most twice the widest, the
+  // the larger of its triangle's longest edge and the two gaps (at most twice the largest gap, the
   // barycentric weights summing to one), an edge contact's vertex within the longest edge, and
   // the triangles around that vertex contain it. Where none lies so near, the slave meets
   // nothing, whichever triangles farther off are found. A triangle lies no nearer than its
