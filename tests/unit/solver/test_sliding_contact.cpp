@@ -2,7 +2,8 @@
 // angular momentum, turns the kinetic energy it takes into heat, and ends on the triangle; with OTM, an elastic block
 // slides along a plate without friction keeping its tangential speed, with friction it loses tangential momentum at
 // friction times the normal momentum the plate gave it, an oblique impact conserves momentum, and
-// no node of either body ends inside the other.
+// no node of either body ends inside the other; and what a slave meets does not depend on a triangle
+// far from it.
 #include "geometry/structured_mesh.hpp"
 #include "material/neo_hookean.hpp"
 #include "solver/common/sliding_contact.hpp"
@@ -14,6 +15,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
+#include <utility>
 
 namespace kessler {
 namespace {
@@ -158,6 +161,74 @@ TEST(SlidingContactOtm, AnObliqueImpactConservesMomentum) {
     const Vec3 total = bodyMomentum(s.model, block_body) + bodyMomentum(s.model, plate_body);
     EXPECT_LT((total - s.p0).norm(), 1e-12 * s.p0.norm());
     EXPECT_LT(s.deepest, 0.01 * h);
+  }
+}
+
+TEST(SlidingContact, AFarLargeTriangleChangesNothing) {
+  // Body 1: a bumpy 6 x 6 grid of 1 mm cells, two triangles each, the body below it. Body 0: slaves
+  // just below and above it, over it and beyond its edges (so face, edge and vertex contacts all
+  // occur). A triangle ten times larger, of body 2 and 100 mm away, meets none of them, but it sets
+  // the longest edge, and with it how far the search looks: a search that looked less far than
+  // the contacts need would decide differently without it.
+  const double pitch = 1e-3, dt = 1e-8;
+  std::vector<Vec3> x, v;
+  std::vector<std::int32_t> body;
+  ContactSurface surface;
+  const int cells = 6;
+  auto vertex = [&](int i, int j) { return static_cast<LocalIndex>(j * (cells + 1) + i); };
+  for (int j = 0; j <= cells; ++j)
+    for (int i = 0; i <= cells; ++i) {
+      x.emplace_back(i * pitch, j * pitch, 0.1 * pitch * std::sin(1.7 * i + 2.3 * j * j));
+      v.emplace_back(0.0, 0.0, 10.0 * std::cos(0.9 * i * j));
+      body.push_back(1);
+    }
+  for (int j = 0; j < cells; ++j)
+    for (int i = 0; i < cells; ++i) {
+      surface.triangles.push_back({vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1)});
+      surface.triangles.push_back({vertex(i, j), vertex(i + 1, j + 1), vertex(i, j + 1)});
+    }
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> across(-1.0 * pitch, (cells + 1.0) * pitch),
+      height(-0.45 * pitch, 0.2 * pitch), speed(-200.0, 200.0);
+  for (int s = 0; s < 400; ++s) {
+    surface.slaves.push_back(static_cast<LocalIndex>(x.size()));
+    x.emplace_back(across(random), across(random), height(random));
+    v.emplace_back(speed(random), speed(random), speed(random) - 300.0);
+    body.push_back(0);
+  }
+  const std::size_t near = x.size();
+  auto run = [&](bool far_triangle, SlidingReport& report) {
+    std::vector<Vec3> xs = x, vs = v;
+    std::vector<std::int32_t> bodies = body;
+    ContactSurface with = surface;
+    if (far_triangle) {
+      const auto first = static_cast<LocalIndex>(xs.size());
+      for (const Vec3& corner : {Vec3(100 * pitch, 0, 0), Vec3(110 * pitch, 0, 0), Vec3(100 * pitch, 10 * pitch, 0)}) {
+        xs.push_back(corner);
+        vs.emplace_back(0.0, 0.0, 0.0);
+        bodies.push_back(2);
+      }
+      with.triangles.push_back({first, static_cast<LocalIndex>(first + 1), static_cast<LocalIndex>(first + 2)});
+    }
+    std::vector<Vec3> du(xs.size());
+    for (std::size_t a = 0; a < xs.size(); ++a) du[a] = dt * vs[a];
+    const std::vector<double> mass(xs.size(), 1e-6);
+    const std::vector<std::uint8_t> held(xs.size(), 0);
+    report = SlidingContact(0.2).apply(with, {xs, du, vs, mass, bodies, held}, 3);
+    return std::pair(du, vs);
+  };
+  SlidingReport alone, beside;
+  const auto [du_alone, v_alone] = run(false, alone);
+  const auto [du_beside, v_beside] = run(true, beside);
+  EXPECT_GT(alone.face_contacts, 0);
+  EXPECT_GT(alone.edge_contacts, 0);
+  EXPECT_EQ(alone.face_contacts, beside.face_contacts);
+  EXPECT_EQ(alone.edge_contacts, beside.edge_contacts);
+  // The same contacts, to round-off: with the longer edge the triangles are binned in larger cells
+  // and met in another order, so the sums of normals may differ in their last digits.
+  for (std::size_t a = 0; a < near; ++a) {
+    EXPECT_LT((v_alone[a] - v_beside[a]).norm(), 1e-9 * 500.0) << a;
+    EXPECT_LT((du_alone[a] - du_beside[a]).norm(), 1e-9 * dt * 500.0) << a;
   }
 }
 
