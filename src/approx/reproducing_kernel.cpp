@@ -20,12 +20,9 @@ Vec4 basis(const Vec3& offset, double scale) {
 }  // namespace
 
 double shapeValues(std::span<const Sample> samples, double scale, std::span<double> psi) {
-  // The windows first, kept in psi.
   Mat4 M = Mat4::Zero();
-  for (std::size_t k = 0; k < samples.size(); ++k) {
-    const Sample& s = samples[k];
+  for (const Sample& s : samples) {
     const double w = cubicWindow(s.offset.norm() / s.support) * s.volume;
-    psi[k] = w;
     if (w <= 0.0) continue;
     const Vec4 h = basis(s.offset, scale);
     M.noalias() += w * h * h.transpose();
@@ -38,8 +35,9 @@ double shapeValues(std::span<const Sample> samples, double scale, std::span<doub
   if (ldlt.info() != Eigen::Success || !(rcond >= min_rcond)) return rcond;
   const Vec4 c = ldlt.solve(Vec4::UnitX());
   for (std::size_t k = 0; k < samples.size(); ++k) {
-    const double w = psi[k];
-    psi[k] = w > 0.0 ? c.dot(basis(samples[k].offset, scale)) * w : 0.0;
+    const Sample& s = samples[k];
+    const double w = cubicWindow(s.offset.norm() / s.support) * s.volume;
+    psi[k] = w > 0.0 ? c.dot(basis(s.offset, scale)) * w : 0.0;
   }
   return rcond;
 }

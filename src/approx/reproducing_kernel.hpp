@@ -34,8 +34,7 @@ inline constexpr double min_rcond = 1e-10;
 
 // Fills psi[k] = Psi of samples[k] at x, with `scale` the basis length s. Returns the smallest over
 // the largest pivot of the scaled moment matrix; below min_rcond (too few particles in reach of x, or
-// all of them in a plane) psi holds no shape values (the windows, as it happens) and the caller
-// reports where.
+// all of them in a plane) psi is left untouched and the caller reports where.
 double shapeValues(std::span<const Sample> samples, double scale, std::span<double> psi);
 
 }  // namespace kessler::rk
