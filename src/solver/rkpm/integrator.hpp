@@ -104,10 +104,11 @@ class Integrator {
   std::vector<double> volume_rate_;  // ln det dF / dt of the last step
   std::vector<Mat3> piola_;          // V0_J P_J
   std::vector<Vec3> du_;             // the coefficients' move over the step
+  std::vector<Vec3> displacement_;   // the coefficients' from the kernels' reference configuration
   // The sliding contact between bodies: its surface, each particle's gap (half its spacing: its
   // cell's reach beyond it), the energy it took in all; the surface
   // particles' velocities and moves a pass gives it, those before the pass, and a mark per particle
-  // (the particles a pass moved).
+  // (the particles a pass moved; the lists put in index order), clear between uses.
   std::vector<Vec3> particle_v_, particle_du_, before_;
   std::vector<Vec3> coefficient_before_;  // the coefficients' velocities before the contact's passes
   std::vector<std::uint8_t> moved_mark_;
