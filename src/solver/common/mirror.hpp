@@ -20,8 +20,8 @@ namespace kessler {
 // +-1 per axis, which is exact (the same bits as negating), and needs no branch in the kernels'
 // loops, which call it for every entry.
 inline Vec3 reflect(const Vec3& x, std::uint8_t flips) {
-  const auto sign = [flips](unsigned a) { return (flips >> a) & 1u ? -1.0 : 1.0; };
-  return Vec3(sign(0) * x[0], sign(1) * x[1], sign(2) * x[2]);
+  static constexpr double sign[2] = {1.0, -1.0};
+  return Vec3(sign[flips & 1u] * x[0], sign[(flips >> 1) & 1u] * x[1], sign[(flips >> 2) & 1u] * x[2]);
 }
 // A tensor of the image (R T R with R the reflection).
 inline Mat3 reflect(Mat3 t, std::uint8_t flips) {
