@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <utility>
 
 namespace kessler::rkpm {
 
@@ -150,15 +151,20 @@ class Evaluator {
       crack_.near(x, near_crack_);
     mirrors_.near(x, reach_, [&](std::uint8_t m) {
       // The image T X_i of particle i seen from x is i seen from T^-1 x: |x - T X_i| = |T^-1 x - X_i|.
-      search_.forEachReaching(mirrors_.point(x, mirrors_.inverse(m)), [&](LocalIndex i, double d2) {
-        if (in_.body[i] != body || d2 >= in_.support[i] * in_.support[i]) return;
-        if (!in_.alone.empty() && in_.alone[static_cast<std::size_t>(i)]) return;
-        if (!near_crack_.empty() && crack_.hides(x, mirrors_.point(in_.reference[i], m), near_crack_)) return;
+      // The search's hits first, in its order, then the tests on each (a call per hit that small
+      // is inlined into the search's loop; the tests are not).
+      hits_.clear();
+      search_.forEachReaching(mirrors_.point(x, mirrors_.inverse(m)),
+                              [&](LocalIndex i, double d2) { hits_.push_back({i, d2}); });
+      for (const auto& [i, d2] : hits_) {
+        if (in_.body[i] != body || d2 >= in_.support[i] * in_.support[i]) continue;
+        if (!in_.alone.empty() && in_.alone[static_cast<std::size_t>(i)]) continue;
+        if (!near_crack_.empty() && crack_.hides(x, mirrors_.point(in_.reference[i], m), near_crack_)) continue;
         who.push_back(i);
         mirror.push_back(mirrors_.flips(m));
         codes_.push_back(m);
         samples_.push_back({x - mirrors_.point(in_.reference[i], m), in_.support[i], in_.volume[i]});
-      });
+      }
     });
     psi.assign(who.size(), 0.0);
     rcond_ = rk::shapeValues(samples_, scale, psi);
@@ -187,6 +193,7 @@ class Evaluator {
   std::vector<LocalIndex> near_crack_;
   std::vector<rk::Sample> samples_;
   std::vector<std::uint8_t> codes_;
+  std::vector<std::pair<LocalIndex, double>> hits_;  // a search's (particle, squared distance)
   double rcond_ = 0.0;
 };
 
