@@ -23,14 +23,11 @@ inline Vec3 reflect(const Vec3& x, std::uint8_t flips) {
   static constexpr double sign[2] = {1.0, -1.0};
   return Vec3(sign[flips & 1u] * x[0], sign[(flips >> 1) & 1u] * x[1], sign[(flips >> 2) & 1u] * x[2]);
 }
-// A tensor of the image (R T R with R the reflection).
-inline Mat3 reflect(Mat3 t, std::uint8_t flips) {
-  for (int a = 0; a < 3; ++a)
-    if (flips & (1u << a)) {
-      t.row(a) *= -1.0;
-      t.col(a) *= -1.0;
-    }
-  return t;
+// A tensor of the image (R T R with R the reflection): entry (a, b) times the signs of axes a and
+// b, exact as for a vector.
+inline Mat3 reflect(const Mat3& t, std::uint8_t flips) {
+  const Vec3 s = reflect(Vec3(1.0, 1.0, 1.0), flips);
+  return t.cwiseProduct(s * s.transpose());
 }
 
 // Where the model lies between its mirror planes.
