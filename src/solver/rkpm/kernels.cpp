@@ -154,8 +154,9 @@ class Evaluator {
       // The search's hits first, in its order, then the tests on each (a call per hit that small
       // is inlined into the search's loop; the tests are not).
       hits_.clear();
-      search_.forEachReaching(mirrors_.point(x, mirrors_.inverse(m)),
-                              [&](LocalIndex i, double d2) { hits_.push_back({i, d2}); });
+      search_.forEachReaching(mirrors_.point(x, mirrors_.inverse(m)), [&](LocalIndex i, double d2) {
+        hits_.push_back({i, d2});
+      });
       for (const auto& [i, d2] : hits_) {
         if (in_.body[i] != body || d2 >= in_.support[i] * in_.support[i]) continue;
         if (!in_.alone.empty() && in_.alone[static_cast<std::size_t>(i)]) continue;
