@@ -15,6 +15,7 @@
 #endif
 #include <cmath>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace kessler {
@@ -37,7 +38,13 @@ class CellList {
 
   // Calls f(index, squared distance) for every binned position within `radius` of q.
   template <typename F>
-  void forEachWithin(const Vec3& q, double radius, F&& f) const;
+  void forEachWithin(const Vec3& q, double radius, F&& f) const {
+    forEachWithinFrom(q, radius, 0, std::forward<F>(f));
+  }
+  // The same for the positions of index `first` and above alone (a pair search that lists each pair
+  // by its lower end skips the others without a call).
+  template <typename F>
+  void forEachWithinFrom(const Vec3& q, double radius, LocalIndex first, F&& f) const;
 
   // Calls f(cell) for every cell that may hold a position within `radius` of q; the binned
   // positions of a cell are indexAt(s) for s in [cellBegin(cell), cellEnd(cell)).
@@ -114,7 +121,7 @@ void CellList::forEachCellAround(long cell, F&& f) const {
 }
 
 template <typename F>
-void CellList::forEachWithin(const Vec3& q, double radius, F&& f) const {
+void CellList::forEachWithinFrom(const Vec3& q, double radius, LocalIndex first, F&& f) const {
   const double r2 = radius * radius;
   std::array<int, 3> lo, hi;
   if (!cellRange(q, radius, lo, hi)) return;
@@ -129,6 +136,7 @@ void CellList::forEachWithin(const Vec3& q, double radius, F&& f) const {
         const double* x = sorted_x_[0].data() + begin;
         const double* y = sorted_x_[1].data() + begin;
         const double* z = sorted_x_[2].data() + begin;
+        const LocalIndex* index = sorted_.data() + begin;
         // The hits as the bits of a mask, visited in order: no branch per candidate (five in six
         // lie outside the radius, and a branch on each would be mispredicted).
         double d2[chunk];
@@ -137,6 +145,7 @@ void CellList::forEachWithin(const Vec3& q, double radius, F&& f) const {
 #if defined(__AVX2__)
         const __m256d qx = _mm256_set1_pd(q[0]), qy = _mm256_set1_pd(q[1]), qz = _mm256_set1_pd(q[2]);
         const __m256d r2v = _mm256_set1_pd(r2);
+        const __m128i below = _mm_set1_epi32(first - 1);
         for (; i + 4 <= n; i += 4) {
           const __m256d dx = _mm256_sub_pd(_mm256_loadu_pd(x + i), qx);
           const __m256d dy = _mm256_sub_pd(_mm256_loadu_pd(y + i), qy);
@@ -144,17 +153,19 @@ void CellList::forEachWithin(const Vec3& q, double radius, F&& f) const {
           const __m256d d =
               _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz));
           _mm256_storeu_pd(d2 + i, d);
-          hits |= static_cast<std::uint64_t>(_mm256_movemask_pd(_mm256_cmp_pd(d, r2v, _CMP_LE_OQ))) << i;
+          const __m128i above = _mm_cmpgt_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(index + i)), below);
+          const int within = _mm256_movemask_pd(_mm256_cmp_pd(d, r2v, _CMP_LE_OQ));
+          hits |= static_cast<std::uint64_t>(within & _mm_movemask_ps(_mm_castsi128_ps(above))) << i;
         }
 #endif
         for (; i < n; ++i) {
           const double dx = x[i] - q[0], dy = y[i] - q[1], dz = z[i] - q[2];
           d2[i] = dx * dx + dy * dy + dz * dz;
-          hits |= static_cast<std::uint64_t>(d2[i] <= r2) << i;
+          hits |= static_cast<std::uint64_t>(d2[i] <= r2 && index[i] >= first) << i;
         }
         for (; hits != 0; hits &= hits - 1) {
           const int hit = std::countr_zero(hits);
-          f(sorted_[begin + hit], d2[hit]);
+          f(index[hit], d2[hit]);
         }
       }
     }

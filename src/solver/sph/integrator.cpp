@@ -207,18 +207,13 @@ void Integrator::search() {
   correction_.resize(n);
   struck_.assign(n, -1);
   // Which pairs are active: once per pair (the test is symmetric in its ends).
-#pragma omp parallel for schedule(static)
-  for (LocalIndex i = 0; i < points.owned; ++i)
-    for (Index e = pairs_.offset[i]; e < pairs_.offset[i + 1]; ++e) {
-      const LocalIndex j = pairs_.other[e];
-      const std::uint8_t m = pairs_.mirror[e];
-      const Vec3 d = points.x[i] - mirrors.point(points.x[j], m);
-      const bool within = points.body[i] == points.body[j] && !points.debris(i) && !points.debris(j);
-      const bool approaching = (points.v[i] - mirrors.vector(points.v[j], m)).dot(d) < 0.0;
-      const double touching = (1.0 + contact_gap) * 0.5 * (spacing_[i] + spacing_[j]);
-      const bool pressed = points.stress[i].trace() < 0.0 && points.stress[j].trace() < 0.0;
-      pairs_.active[e] = within || (approaching && d.squaredNorm() < touching * touching) || pressed;
-    }
+  pairs_.weigh(points.x, h_, [&](LocalIndex i, LocalIndex j, std::uint8_t m, const Vec3& d) {
+    const bool within = points.body[i] == points.body[j] && !points.debris(i) && !points.debris(j);
+    const bool approaching = (points.v[i] - mirrors.vector(points.v[j], m)).dot(d) < 0.0;
+    const double touching = (1.0 + contact_gap) * 0.5 * (spacing_[i] + spacing_[j]);
+    const bool pressed = points.stress[i].trace() < 0.0 && points.stress[j].trace() < 0.0;
+    return within || (approaching && d.squaredNorm() < touching * touching) || pressed;
+  });
   std::int64_t uncorrected = 0;
 #pragma omp parallel for schedule(static) reduction(+ : uncorrected)
   for (LocalIndex i = 0; i < points.owned; ++i) {

@@ -1,7 +1,6 @@
 #include "solver/sph/pairs.hpp"
 
 #include "core/transpose.hpp"
-#include "solver/sph/kernel.hpp"
 
 #include <algorithm>
 
@@ -40,9 +39,9 @@ void Pairs::build(std::span<const Vec3> x, std::span<const double> h, LocalIndex
     const double reach = h[i] + h_max;
     const bool ghost = !share.own(static_cast<LocalIndex>(i));
     mirrors_.near(x[i], reach, [&](std::uint8_t m) {
-      cells_.forEachWithin(mirrors_.point(x[i], mirrors_.inverse(m)), reach, [&](LocalIndex j, double d2) {
-        // Each pair once, by its lower particle (a particle's own image once).
-        if (static_cast<std::size_t>(j) < i || (m == 0 && static_cast<std::size_t>(j) == i)) return;
+      // Each pair once, by its lower particle (a particle's own image once).
+      const auto first = static_cast<LocalIndex>(m == 0 ? i + 1 : i);
+      cells_.forEachWithinFrom(mirrors_.point(x[i], mirrors_.inverse(m)), reach, first, [&](LocalIndex j, double d2) {
         if (ghost && !share.own(j)) return;  // two ghosts: no own particle reads the pair
         const double support = h[i] + h[static_cast<std::size_t>(j)];
         if (d2 < support * support) f(j, m);
@@ -81,15 +80,6 @@ void Pairs::build(std::span<const Vec3> x, std::span<const double> h, LocalIndex
     for (std::size_t k = 0; k < found_[t].size(); ++k) {
       other[start[t] + k] = found_[t][k].j;
       mirror[start[t] + k] = found_[t][k].mirror;
-    }
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i)
-    for (auto e = static_cast<std::size_t>(offset[i]); e < static_cast<std::size_t>(offset[i + 1]); ++e) {
-      const auto j = static_cast<std::size_t>(other[e]);
-      const Vec3 d = x[i] - mirrors_.point(x[j], mirror[e]);
-      const double r = d.norm(), h_ij = 0.5 * (h[i] + h[j]);
-      kernel[e] = CubicSpline::value(r, h_ij);
-      gradient[e] = r > 0.0 ? Vec3(CubicSpline::slope(r, h_ij) / r * d) : Vec3::Zero();
     }
   // The other ends' lists: each particle's pairs listed by lower particles, in their order (a
   // particle's pair with its own image is its own alone).
