@@ -39,38 +39,20 @@ struct Pairs {
   std::vector<std::uint8_t> listed_mirror;  // the image of the listing particle as j meets it
 
   // The pairs of the first `count` positions with smoothing lengths h, and their images across the
-  // mirror planes of `box` (their kernels and activity by weigh()). With `share` (a distributed run's own particles and
-  // ghosts, in id order), the cells are the whole run's, and pairs of two ghosts are left out (no own particle reads
-  // them: a ghost's sums are its owner's). Collective then.
+  // mirror planes of `box` (their kernels and activity by weigh()). With `share` (a distributed run's
+  // own particles and ghosts, in id order), the cells are the whole run's, and pairs of two ghosts are
+  // left out (no own particle reads them: a ghost's sums are its owner's). Collective then.
   void build(std::span<const Vec3> x, std::span<const double> h, LocalIndex count, const MirrorBox& box,
              const Share& share = {});
-  // Each pair's kernel and gradient at the positions x it was built with, and whether it is
-  // takes_part(i, j, mirror, d), d = x_i - T x_j: one pass over the pairs.
-  template <class Active>
-  void weigh(std::span<const Vec3> x, std::span<const double> h, Active&& takes_part) {
-    const auto n = static_cast<LocalIndex>(offset.size()) - 1;
-#pragma omp parallel for schedule(static)
-    for (LocalIndex i = 0; i < n; ++i)
-      for (Index e = offset[i]; e < offset[i + 1]; ++e) {
-        const LocalIndex j = other[e];
-        const Vec3 d = x[i] - mirrors_.point(x[j], mirror[e]);
-        const double r = d.norm(), h_ij = 0.5 * (h[i] + h[j]);
-        kernel[e] = CubicSpline::value(r, h_ij);
-        gradient[e] = r > 0.0 ? Vec3(CubicSpline::slope(r, h_ij) / r * d) : Vec3::Zero();
-        active[e] = takes_part(i, j, mirror[e], d);
-      }
-  }
+  // Each pair's kernel and gradient at the positions x it was built with, and its activity,
+  // takes_part(i, j, mirror, d) with d = x_i - T x_j: one pass over the pairs.
+  template <class TakesPart>
+  void weigh(std::span<const Vec3> x, std::span<const double> h, TakesPart&& takes_part);
   // The images the codes in `mirror` and `listed_mirror` name.
-  const Mirrors& mirrors() const {
-    return mirrors_;
-  }
-  Index size() const {
-    return static_cast<Index>(other.size());
-  }
+  const Mirrors& mirrors() const { return mirrors_; }
+  Index size() const { return static_cast<Index>(other.size()); }
   // Each particle's pairs counted from both ends (a particle's pair with its own image once).
-  Index neighbourCount() const {
-    return 2 * size() - self_images_;
-  }
+  Index neighbourCount() const { return 2 * size() - self_images_; }
 
   // f(j, mirror, g, active) for each pair of particle i: the other particle j (whose image across
   // `mirror` i meets), i's kernel gradient g and whether the pair is active; those i lists, then
@@ -96,5 +78,20 @@ struct Pairs {
   std::vector<std::vector<Found>> found_;  // each thread's pairs, in particle order
   Index self_images_ = 0;
 };
+
+template <class TakesPart>
+void Pairs::weigh(std::span<const Vec3> x, std::span<const double> h, TakesPart&& takes_part) {
+  const auto n = static_cast<LocalIndex>(offset.size()) - 1;
+#pragma omp parallel for schedule(static)
+  for (LocalIndex i = 0; i < n; ++i)
+    for (Index e = offset[i]; e < offset[i + 1]; ++e) {
+      const LocalIndex j = other[e];
+      const Vec3 d = x[i] - mirrors_.point(x[j], mirror[e]);
+      const double r = d.norm(), h_ij = 0.5 * (h[i] + h[j]);
+      kernel[e] = CubicSpline::value(r, h_ij);
+      gradient[e] = r > 0.0 ? Vec3(CubicSpline::slope(r, h_ij) / r * d) : Vec3::Zero();
+      active[e] = takes_part(i, j, mirror[e], d);
+    }
+}
 
 }  // namespace kessler::sph
