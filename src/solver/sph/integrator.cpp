@@ -250,32 +250,56 @@ void Integrator::forces() {
   const PointStore& points = model_.points;
   const Mirrors& mirrors = pairs_.mirrors();
   const SphOptions& o = settings_.sph;
+  // (A + T B) g for the tensors A of i and B of j seen from i, column by column in registers: a 3 x 3
+  // sum stored in pairs of entries and read back by columns stalls each load that straddles two
+  // stores.
+  const auto sumTimes = [&](const Mat3& A, const Mat3& B, std::uint8_t m, const Vec3& g) -> Vec3 {
+    const auto times = [&](const Mat3& Bm) {
+      Vec3 r;
+      for (int k = 0; k < 3; ++k)
+        r[k] = std::fma(A(k, 2) + Bm(k, 2), g[2], std::fma(A(k, 1) + Bm(k, 1), g[1], (A(k, 0) + Bm(k, 0)) * g[0]));
+      return r;
+    };
+    return m == 0 ? times(B) : times(mirrors.tensor(B, m));
+  };
   const auto n = static_cast<std::size_t>(points.owned);
   acceleration_.resize(n);
   viscous_power_.resize(n);
   signal_.resize(n);
-  // Per particle: sigma B^T, the artificial stress R (tensile principal stresses only; `tensile`
-  // where it is not zero), the density and the sound speed the viscosity uses (none for debris).
-  std::vector<Mat3> stress_b(n), artificial(n);
-  std::vector<double> density(n), sound(n);
-  std::vector<std::uint8_t> tensile(n);
+  // Per particle, what a pair reads of either end, in one record (a pair's other end is near in
+  // space, not in memory: its record is three cache lines where a dozen arrays were a dozen): among
+  // them sigma B^T, the density and the sound speed the viscosity uses (none for debris); and apart,
+  // the artificial stress R (tensile principal stresses only; `tensile` where it is not zero).
+  ends_.resize(n);
+  artificial_.resize(n);
 #pragma omp parallel for schedule(static)
   for (LocalIndex p = 0; p < points.owned; ++p) {
-    stress_b[p] = points.stress[p] * correction_[p].transpose();
-    density[p] = points.density(p);
-    sound[p] = points.debris(p) ? 0.0 : points.sound_speed[p];
-    artificial[p].setZero();
-    tensile[p] = 0;
+    PairEnd& end = ends_[p];
+    end.stress_b = points.stress[p] * correction_[p].transpose();
+    end.x = points.x[p];
+    end.v = points.v[p];
+    end.volume = points.volume[p];
+    end.mass = points.mass[p];
+    end.density = points.density(p);
+    end.sound = points.debris(p) ? 0.0 : points.sound_speed[p];
+    end.alpha = model_.viscosity[p];
+    end.h = h_[p];
+    end.spacing = spacing_[p];
+    end.body = points.body[p];
+    end.broken = points.broken[p];
+    end.tensile = 0;
+    Mat3& artificial = artificial_[p];
+    artificial.setZero();
     if (points.broken[p] || o.artificial_stress <= 0.0) continue;
     Eigen::SelfAdjointEigenSolver<Mat3> principal;
     principal.computeDirect(points.stress[p]);
-    const double rho2 = density[p] * density[p];
+    const double rho2 = end.density * end.density;
     for (int a = 0; a < 3; ++a) {
       const double s = principal.eigenvalues()[a];
       if (s > 0.0) {
         const Vec3 e = principal.eigenvectors().col(a);
-        artificial[p].noalias() -= o.artificial_stress * s / rho2 * e * e.transpose();
-        tensile[p] = 1;
+        artificial.noalias() -= o.artificial_stress * s / rho2 * e * e.transpose();
+        end.tensile = 1;
       }
     }
   }
@@ -285,36 +309,38 @@ void Integrator::forces() {
   pair_share_.resize(pairs);
 #pragma omp parallel for schedule(dynamic, 256)
   for (LocalIndex i = 0; i < points.owned; ++i) {
+    const PairEnd& a = ends_[i];
     for (Index e = pairs_.offset[i]; e < pairs_.offset[i + 1]; ++e) {
       const LocalIndex j = pairs_.other[e];
+      const PairEnd& b = ends_[j];
       const std::uint8_t m = pairs_.mirror[e];
       const Vec3& grad = pairs_.gradient[e];
+      const Vec3 d = a.x - mirrors.point(b.x, m);
       Vec3 f = Vec3::Zero();
       if (pairs_.active[e]) {
-        const Mat3 sum = stress_b[i] + mirrors.tensor(stress_b[j], m);
-        f.noalias() += points.volume[i] * points.volume[j] * (sum * grad);
-        if ((tensile[i] || tensile[j]) && points.body[i] == points.body[j] && !points.broken[i] && !points.broken[j]) {
-          const double h_ij = 0.5 * (h_[i] + h_[j]);
-          const double reference = CubicSpline::value(0.5 * (spacing_[i] + spacing_[j]), h_ij);
-          const double ratio = reference > 0.0 ? std::min(pairs_.kernel[e] / reference, 1.0) : 0.0;
+        f.noalias() += a.volume * b.volume * sumTimes(a.stress_b, b.stress_b, m, grad);
+        if ((a.tensile || b.tensile) && a.body == b.body && !a.broken && !b.broken) {
+          const double h_ij = 0.5 * (a.h + b.h);
+          const double reference = CubicSpline::value(0.5 * (a.spacing + b.spacing), h_ij);
+          // (The pair's kernel at |d|, as the search formed its gradient: only the pairs that need it.)
+          const double kernel = CubicSpline::value(d.norm(), h_ij);
+          const double ratio = reference > 0.0 ? std::min(kernel / reference, 1.0) : 0.0;
           double fn = 1.0;
           for (int k = 0; k < o.artificial_stress_exponent; ++k) fn *= ratio;
-          f.noalias() +=
-              points.mass[i] * points.mass[j] * fn * ((artificial[i] + mirrors.tensor(artificial[j], m)) * grad);
+          f.noalias() += a.mass * b.mass * fn * sumTimes(artificial_[i], artificial_[j], m, grad);
         }
       }
       PairShare& share = pair_share_[e];
       share.power = share.signal = 0.0;
-      const Vec3 d = points.x[i] - mirrors.point(points.x[j], m);
-      const Vec3 v = points.v[i] - mirrors.vector(points.v[j], m);
+      const Vec3 v = a.v - mirrors.vector(b.v, m);
       const double approach = v.dot(d);
       if (approach < 0.0 && pairs_.active[e]) {
-        const double h_ij = 0.5 * (h_[i] + h_[j]);
+        const double h_ij = 0.5 * (a.h + b.h);
         const double mu = h_ij * approach / (d.squaredNorm() + 0.01 * h_ij * h_ij);
-        const double rho = 0.5 * (density[i] + density[j]);
-        const double alpha = 0.5 * (model_.viscosity[i] + model_.viscosity[j]);
-        const double viscosity = alpha * (-0.5 * (sound[i] + sound[j]) * mu + o.viscosity_ratio * mu * mu) / rho;
-        const double mm = points.mass[i] * points.mass[j];
+        const double rho = 0.5 * (a.density + b.density);
+        const double alpha = 0.5 * (a.alpha + b.alpha);
+        const double viscosity = alpha * (-0.5 * (a.sound + b.sound) * mu + o.viscosity_ratio * mu * mu) / rho;
+        const double mm = a.mass * b.mass;
         f.noalias() -= mm * viscosity * grad;
         share.power = 0.5 * mm * viscosity * v.dot(grad);
         share.signal = -mu;

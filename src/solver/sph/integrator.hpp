@@ -119,7 +119,17 @@ class Integrator {
     double power, signal;
   };
   std::vector<PairShare> pair_share_;
-  std::vector<int> struck_;  // the body each debris particle met at the last search, -1 none
+  // Per particle (forces()): what a pair reads of either end, packed.
+  struct PairEnd {
+    Mat3 stress_b;  // sigma B^T
+    Vec3 x, v;
+    double volume, mass, density, sound, alpha, h, spacing;
+    int body;
+    std::uint8_t broken, tensile;
+  };
+  std::vector<PairEnd> ends_;
+  std::vector<Mat3> artificial_;  // the artificial stress R of each particle (forces())
+  std::vector<int> struck_;       // the body each debris particle met at the last search, -1 none
   LocalIndex uncorrected_ = 0;
 };
 

@@ -71,7 +71,6 @@ void Pairs::build(std::span<const Vec3> x, std::span<const double> h, LocalIndex
   mirror.resize(total);
   active.resize(total);
   gradient.resize(total);
-  kernel.resize(total);
   // Thread t's block begins at the pairs of all blocks before it (as listed under schedule(static)).
   std::vector<std::size_t> start(found_.size() + 1, 0);
   for (std::size_t t = 0; t < found_.size(); ++t) start[t + 1] = start[t] + found_[t].size();

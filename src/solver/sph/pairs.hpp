@@ -5,7 +5,7 @@
 // at every step's positions from a cell list.
 //
 // Each pair is listed once, by its lower particle i (j > i, or j >= i for an image: a particle near
-// a plane meets its own image), with i's view of it: the kernel and its gradient at
+// a plane meets its own image), with i's view of it: the kernel's gradient at
 // d = x_i - T x_j (T the pair's image, x -> R x + t with R a reflection, solver/common/mirror.hpp).
 // j sees the same pair as the image of i by the inverse of T, at d_j = -R d, with the gradient
 // -R grad_i W: what is computed once per pair reaches both ends, j's share reflected. Each particle gathers its pairs'
@@ -29,7 +29,6 @@ struct Pairs {
   std::vector<std::uint8_t> mirror;  // the image of j (a code of mirrors(); 0: j itself)
   std::vector<std::uint8_t> active;  // takes part in the deformation and the stress (Integrator)
   std::vector<Vec3> gradient;        // grad_i W(x_i - x_j', h_ij), h_ij = (h_i + h_j) / 2
-  std::vector<double> kernel;        // W(|x_i - x_j'|, h_ij)
   // The pairs that list particle j as their other end (not its own image's), in the order of their
   // listing particle: listed_by[listed_offset[j] .. listed_offset[j + 1]), with that particle and the
   // image beside them.
@@ -44,7 +43,7 @@ struct Pairs {
   // left out (no own particle reads them: a ghost's sums are its owner's). Collective then.
   void build(std::span<const Vec3> x, std::span<const double> h, LocalIndex count, const MirrorBox& box,
              const Share& share = {});
-  // Each pair's kernel and gradient at the positions x it was built with, and its activity,
+  // Each pair's kernel gradient at the positions x it was built with, and its activity,
   // takes_part(i, j, mirror, d) with d = x_i - T x_j: one pass over the pairs.
   template <class TakesPart>
   void weigh(std::span<const Vec3> x, std::span<const double> h, TakesPart&& takes_part);
@@ -87,9 +86,7 @@ void Pairs::weigh(std::span<const Vec3> x, std::span<const double> h, TakesPart&
     for (Index e = offset[i]; e < offset[i + 1]; ++e) {
       const LocalIndex j = other[e];
       const Vec3 d = x[i] - mirrors_.point(x[j], mirror[e]);
-      const double r = d.norm(), h_ij = 0.5 * (h[i] + h[j]);
-      kernel[e] = CubicSpline::value(r, h_ij);
-      gradient[e] = r > 0.0 ? Vec3(CubicSpline::slope(r, h_ij) / r * d) : Vec3::Zero();
+      gradient[e] = CubicSpline::slopeOverDistance(d.norm(), 0.5 * (h[i] + h[j])) * d;
       active[e] = takes_part(i, j, mirror[e], d);
     }
 }

@@ -13,6 +13,7 @@
 #include <omp.h>
 
 #include <cmath>
+#include <limits>
 #include <map>
 #include <random>
 #include <utility>
@@ -34,6 +35,25 @@ TEST(CubicSpline, IntegratesToOneAndItsSlopeIsItsDerivative) {
   }
   EXPECT_EQ(CubicSpline::value(2.0, h), 0.0);
   EXPECT_EQ(CubicSpline::slope(2.0, h), 0.0);
+}
+
+// The pair loop's gradient factor is the slope over the distance, on both pieces and at their joint,
+// to a few roundings; 0 at and beyond the support, and finite at r = 0 (where d = 0). The two forms
+// round q = r / h differently (by an ulp or two), and the outer piece's (2 - q)^2 turns an error dq
+// into a relative 2 dq / (2 - q): the bound grows so near the support's edge, and is a few ulps
+// elsewhere.
+TEST(CubicSpline, SlopeOverDistanceIsTheSlopeOverTheDistance) {
+  const double ulp = std::numeric_limits<double>::epsilon();
+  for (const double h : {1.0, 2.7e-4})
+    for (int k = 1; k < 400; ++k) {
+      const double r = k * 0.005 * h, q = r / h;
+      const double expected = CubicSpline::slope(r, h) / r;
+      const double bound = 8.0 * ulp * (1.0 + (q < 1.0 ? 0.0 : 2.0 * q / (2.0 - q))) * std::abs(expected);
+      EXPECT_NEAR(CubicSpline::slopeOverDistance(r, h), expected, bound) << "r/h = " << q;
+    }
+  EXPECT_EQ(CubicSpline::slopeOverDistance(2.0, 1.0), 0.0);
+  EXPECT_EQ(CubicSpline::slopeOverDistance(2.5, 1.0), 0.0);
+  EXPECT_TRUE(std::isfinite(CubicSpline::slopeOverDistance(0.0, 1.0)));
 }
 
 // A jittered block of particles (6 x 6 x 6, spacing 1 mm, each moved up to 0.2 mm).
@@ -73,7 +93,9 @@ TEST(SphPairs, EachParticleSeesItsPairsFromBothEnds) {
         if (i == j && m == 0) continue;
         const Vec3 d = x[i] - reflect(x[j], static_cast<std::uint8_t>(m));
         const double r = d.norm(), h_ij = 0.5 * (h[i] + h[j]);
-        if (r < h[i] + h[j]) expected[i][{j, m}] = CubicSpline::slope(r, h_ij) / r * d;
+        // (The kernel's own form of the gradient: this test is of the pairs, the kernel's test above
+        // checks the form against the slope.)
+        if (r < h[i] + h[j]) expected[i][{j, m}] = CubicSpline::slopeOverDistance(r, h_ij) * d;
       }
   const int before = omp_get_max_threads();
   for (const int threads : {1, 2, 3}) {
