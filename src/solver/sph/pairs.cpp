@@ -91,7 +91,7 @@ void Pairs::build(std::span<const Vec3> x, std::span<const double> h, LocalIndex
         listed_mirror.resize(listed);
       },
       [&](std::size_t k, Index e, LocalIndex i) {
-        listed_by[k] = e;
+        listed_by[k] = static_cast<std::uint32_t>(e);
         listed_other[k] = i;
         listed_mirror[k] = mirrors_.inverse(mirror[e]);
       });

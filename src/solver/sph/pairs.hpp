@@ -33,7 +33,7 @@ struct Pairs {
   // listing particle: listed_by[listed_offset[j] .. listed_offset[j + 1]), with that particle and the
   // image beside them.
   std::vector<Index> listed_offset;
-  std::vector<Index> listed_by;
+  std::vector<std::uint32_t> listed_by;  // (the transpose holds at most 2^32 - 1 pairs)
   std::vector<LocalIndex> listed_other;
   std::vector<std::uint8_t> listed_mirror;  // the image of the listing particle as j meets it
 
