@@ -166,9 +166,12 @@ void Integrator::step() {
 }
 
 double Integrator::smoothingLength(LocalIndex p) const {
-  const PointStore& points = model_.points;
-  const double h0 = settings_.sph.smoothing * points.spacing0[p];
-  return std::clamp(settings_.sph.smoothing * points.spacing(p), 0.1 * h0, 2.0 * h0);
+  return smoothingLength(p, model_.points.spacing(p));
+}
+
+double Integrator::smoothingLength(LocalIndex p, double spacing) const {
+  const double h0 = settings_.sph.smoothing * model_.points.spacing0[p];
+  return std::clamp(settings_.sph.smoothing * spacing, 0.1 * h0, 2.0 * h0);
 }
 
 double Integrator::meanNeighbours() const {
@@ -198,9 +201,10 @@ void Integrator::search() {
   const auto n = static_cast<std::size_t>(points.owned);
   h_.resize(n);
   spacing_.resize(n);
+#pragma omp parallel for schedule(static)
   for (std::size_t p = 0; p < n; ++p) {
-    h_[p] = smoothingLength(static_cast<LocalIndex>(p));
     spacing_[p] = points.spacing(static_cast<LocalIndex>(p));
+    h_[p] = smoothingLength(static_cast<LocalIndex>(p), spacing_[p]);
   }
   pairs_.build(points.x, h_, points.owned, settings_.mirrors, own);
   const Mirrors& mirrors = pairs_.mirrors();
@@ -291,6 +295,13 @@ void Integrator::forces() {
     Mat3& artificial = artificial_[p];
     artificial.setZero();
     if (points.broken[p] || o.artificial_stress <= 0.0) continue;
+    // No principal stress is tensile where -sigma is positive definite (Sylvester's criterion: its
+    // leading minors are positive) or sigma is zero, as in matter at rest or compressed: the
+    // principal stresses are solved for only where one may be.
+    const Mat3& sigma = points.stress[p];
+    const bool compressed =
+        sigma(0, 0) < 0.0 && sigma(0, 0) * sigma(1, 1) - sigma(0, 1) * sigma(1, 0) > 0.0 && sigma.determinant() < 0.0;
+    if (compressed || sigma.isZero(0.0)) continue;
     Eigen::SelfAdjointEigenSolver<Mat3> principal;
     principal.computeDirect(points.stress[p]);
     const double rho2 = end.density * end.density;

@@ -59,6 +59,7 @@ class Integrator {
   // twice its reference one (expanded debris does not widen every search; compressed matter keeps
   // its neighbours down to a thousandfold compression, beyond any shock's).
   double smoothingLength(LocalIndex p) const;
+  double smoothingLength(LocalIndex p, double spacing) const;  // at a spacing known already
   // The mean pairs of a particle, over every rank (collective in a distributed run).
   double meanNeighbours() const;
   // Particles whose kernel correction was singular at the last search (too few neighbours), over
