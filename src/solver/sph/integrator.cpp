@@ -230,8 +230,13 @@ void Integrator::search() {
       if (points.debris(i) && !points.debris(j) && points.body[j] != points.body[i]) struck_[i] = points.body[j];
     });
     // The correction where the moment is well conditioned: its smallest singular value at least a
-    // tenth of an interior particle's (1), as at a surface, an edge or a corner of a body.
-    if (!points.debris(i) && moment.allFinite() && smallestRootEigenvalue(moment.transpose() * moment) > 0.1) {
+    // tenth of an interior particle's (1), as at a surface, an edge or a corner of a body. Near the
+    // identity, as within a body, that needs no eigenvalue: the smallest singular value of M is at
+    // least 1 - |M - I|_2 >= 1 - |M - I|_F (0.15 and more where |M - I|_F < 0.85).
+    const auto well_conditioned = [](const Mat3& M) {
+      return (M - Mat3::Identity()).squaredNorm() < 0.85 * 0.85 || smallestRootEigenvalue(M.transpose() * M) > 0.1;
+    };
+    if (!points.debris(i) && moment.allFinite() && well_conditioned(moment)) {
       correction_[i] = moment.inverse();
     } else {
       correction_[i].setIdentity();
