@@ -260,14 +260,11 @@ void Integrator::forces() {
   const Mirrors& mirrors = pairs_.mirrors();
   const SphOptions& o = settings_.sph;
   // (A + T B) g for the tensors A of i and B of j seen from i, column by column in registers: a 3 x 3
-  // sum stored in pairs of entries and read back by columns stalls each load that straddles two
-  // stores.
+  // sum stored in pairs of entries and read back by columns, or a vector stored entry by entry and
+  // read back in pairs, stalls each load that straddles two stores.
   const auto sumTimes = [&](const Mat3& A, const Mat3& B, std::uint8_t m, const Vec3& g) -> Vec3 {
     const auto times = [&](const Mat3& Bm) {
-      Vec3 r;
-      for (int k = 0; k < 3; ++k)
-        r[k] = std::fma(A(k, 2) + Bm(k, 2), g[2], std::fma(A(k, 1) + Bm(k, 1), g[1], (A(k, 0) + Bm(k, 0)) * g[0]));
-      return r;
+      return Vec3((A.col(0) + Bm.col(0)) * g[0] + (A.col(1) + Bm.col(1)) * g[1] + (A.col(2) + Bm.col(2)) * g[2]);
     };
     return m == 0 ? times(B) : times(mirrors.tensor(B, m));
   };
