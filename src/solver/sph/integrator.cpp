@@ -206,24 +206,26 @@ void Integrator::search() {
     spacing_[p] = points.spacing(static_cast<LocalIndex>(p));
     h_[p] = smoothingLength(static_cast<LocalIndex>(p), spacing_[p]);
   }
-  pairs_.build(points.x, h_, points.owned, settings_.mirrors, own);
-  const Mirrors& mirrors = pairs_.mirrors();
-  correction_.resize(n);
   struck_.assign(n, -1);
+  correction_.resize(n);
   // Which pairs are active: once per pair (the test is symmetric in its ends).
-  pairs_.weigh(points.x, h_, [&](LocalIndex i, LocalIndex j, std::uint8_t m, const Vec3& d) {
-    const bool within = points.body[i] == points.body[j] && !points.debris(i) && !points.debris(j);
-    const bool approaching = (points.v[i] - mirrors.vector(points.v[j], m)).dot(d) < 0.0;
-    const double touching = (1.0 + contact_gap) * 0.5 * (spacing_[i] + spacing_[j]);
-    const bool pressed = points.stress[i].trace() < 0.0 && points.stress[j].trace() < 0.0;
-    return within || (approaching && d.squaredNorm() < touching * touching) || pressed;
-  });
+  pairs_.build(points.x, h_, points.owned, settings_.mirrors, own,
+               [&](LocalIndex i, LocalIndex j, std::uint8_t m, const Vec3& d) {
+                 // (Most pairs lie within a body: the other ends' velocity and stress are read only
+                 // for the rest.)
+                 if (points.body[i] == points.body[j] && !points.debris(i) && !points.debris(j)) return true;
+                 const bool approaching = (points.v[i] - pairs_.mirrors().vector(points.v[j], m)).dot(d) < 0.0;
+                 const double touching = (1.0 + contact_gap) * 0.5 * (spacing_[i] + spacing_[j]);
+                 const bool pressed = points.stress[i].trace() < 0.0 && points.stress[j].trace() < 0.0;
+                 return (approaching && d.squaredNorm() < touching * touching) || pressed;
+               });
+  const Mirrors& mirrors = pairs_.mirrors();
   std::int64_t uncorrected = 0;
 #pragma omp parallel for schedule(static) reduction(+ : uncorrected)
   for (LocalIndex i = 0; i < points.owned; ++i) {
     if (!own.own(i)) continue;  // a ghost's correction is its owner's (refreshed below)
     Mat3 moment = Mat3::Zero();
-    pairs_.forEachOf(i, [&](LocalIndex j, std::uint8_t m, const Vec3& grad, bool active) {
+    pairs_.forEachOf(i, points.x, [&](LocalIndex j, std::uint8_t m, const Vec3& grad, bool active) {
       if (!active) return;
       const Vec3 d = points.x[i] - mirrors.point(points.x[j], m);
       moment.noalias() -= points.volume[j] * d * grad.transpose();
@@ -324,13 +326,14 @@ void Integrator::forces() {
   for (LocalIndex i = 0; i < points.owned; ++i) {
     const PairEnd& a = ends_[i];
     for (Index e = pairs_.offset[i]; e < pairs_.offset[i + 1]; ++e) {
-      const LocalIndex j = pairs_.other[e];
+      const Pair& pair = pairs_.pair[e];
+      const LocalIndex j = pair.other;
       const PairEnd& b = ends_[j];
-      const std::uint8_t m = pairs_.mirror[e];
-      const Vec3& grad = pairs_.gradient[e];
+      const std::uint8_t m = pair.mirror;
       const Vec3 d = a.x - mirrors.point(b.x, m);
+      const Vec3 grad = pair.gradient(d);
       Vec3 f = Vec3::Zero();
-      if (pairs_.active[e]) {
+      if (pair.active) {
         f.noalias() += a.volume * b.volume * sumTimes(a.stress_b, b.stress_b, m, grad);
         if ((a.tensile || b.tensile) && a.body == b.body && !a.broken && !b.broken) {
           const double h_ij = 0.5 * (a.h + b.h);
@@ -347,7 +350,7 @@ void Integrator::forces() {
       share.power = share.signal = 0.0;
       const Vec3 v = a.v - mirrors.vector(b.v, m);
       const double approach = v.dot(d);
-      if (approach < 0.0 && pairs_.active[e]) {
+      if (approach < 0.0 && pair.active) {
         const double h_ij = 0.5 * (a.h + b.h);
         const double mu = h_ij * approach / (d.squaredNorm() + 0.01 * h_ij * h_ij);
         const double rho = 0.5 * (a.density + b.density);
@@ -406,7 +409,7 @@ void Integrator::deform(double dt) {
     points.dF[i].setIdentity();
     if (points.debris(i)) continue;
     Mat3 gradient = Mat3::Zero();
-    pairs_.forEachOf(i, [&](LocalIndex j, std::uint8_t m, const Vec3& grad, bool active) {
+    pairs_.forEachOf(i, points.x, [&](LocalIndex j, std::uint8_t m, const Vec3& grad, bool active) {
       if (active)
         gradient.noalias() += points.volume[j] * (mirrors.vector(points.v[j], m) - points.v[i]) * grad.transpose();
     });

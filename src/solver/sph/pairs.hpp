@@ -21,14 +21,26 @@
 #include <span>
 #include <vector>
 
+#include <omp.h>
+
 namespace kessler::sph {
 
+// A pair as its listing particle i sees it: 16 bytes, a quarter of a cache line (every pass over the
+// pairs streams them from memory; the particles' positions, a pair's other factor, stay in cache).
+struct Pair {
+  // The kernel's gradient over the pair's separation: grad_i W(d, h_ij) = slope d, with d = x_i - T x_j
+  // at the positions of the search and h_ij = (h_i + h_j) / 2 (CubicSpline::slopeOverDistance).
+  double slope;
+  LocalIndex other;     // j
+  std::uint8_t mirror;  // the image of j (a code of mirrors(); 0: j itself)
+  std::uint8_t active;  // takes part in the deformation and the stress (Integrator)
+
+  Vec3 gradient(const Vec3& d) const { return slope * d; }
+};
+
 struct Pairs {
-  std::vector<Index> offset;         // the pairs particle i lists are [offset[i], offset[i + 1])
-  std::vector<LocalIndex> other;     // j
-  std::vector<std::uint8_t> mirror;  // the image of j (a code of mirrors(); 0: j itself)
-  std::vector<std::uint8_t> active;  // takes part in the deformation and the stress (Integrator)
-  std::vector<Vec3> gradient;        // grad_i W(x_i - x_j', h_ij), h_ij = (h_i + h_j) / 2
+  std::vector<Index> offset;  // the pairs particle i lists are pair[offset[i] .. offset[i + 1])
+  std::vector<Pair> pair;
   // The pairs that list particle j as their other end (not its own image's), in the order of their
   // listing particle: listed_by[listed_offset[j] .. listed_offset[j + 1]), with that particle and the
   // image beside them.
@@ -38,57 +50,94 @@ struct Pairs {
   std::vector<std::uint8_t> listed_mirror;  // the image of the listing particle as j meets it
 
   // The pairs of the first `count` positions with smoothing lengths h, and their images across the
-  // mirror planes of `box` (their kernels and activity by weigh()). With `share` (a distributed run's
+  // mirror planes of `box`, each with its kernel gradient and its activity takes_part(i, j, mirror, d)
+  // (d = x_i - T x_j), formed as the cell list finds it: one pass. With `share` (a distributed run's
   // own particles and ghosts, in id order), the cells are the whole run's, and pairs of two ghosts are
   // left out (no own particle reads them: a ghost's sums are its owner's). Collective then.
-  void build(std::span<const Vec3> x, std::span<const double> h, LocalIndex count, const MirrorBox& box,
-             const Share& share = {});
-  // Each pair's kernel gradient at the positions x it was built with, and its activity,
-  // takes_part(i, j, mirror, d) with d = x_i - T x_j: one pass over the pairs.
   template <class TakesPart>
-  void weigh(std::span<const Vec3> x, std::span<const double> h, TakesPart&& takes_part);
+  void build(std::span<const Vec3> x, std::span<const double> h, LocalIndex count, const MirrorBox& box,
+             const Share& share, TakesPart&& takes_part);
   // The images the codes in `mirror` and `listed_mirror` name.
   const Mirrors& mirrors() const { return mirrors_; }
-  Index size() const { return static_cast<Index>(other.size()); }
+  Index size() const { return static_cast<Index>(pair.size()); }
   // Each particle's pairs counted from both ends (a particle's pair with its own image once).
   Index neighbourCount() const { return 2 * size() - self_images_; }
 
-  // f(j, mirror, g, active) for each pair of particle i: the other particle j (whose image across
-  // `mirror` i meets), i's kernel gradient g and whether the pair is active; those i lists, then
-  // those that list i.
+  // f(j, mirror, g, active) for each pair of particle i, at the positions x of the search: the other
+  // particle j (whose image across `mirror` i meets), i's kernel gradient g and whether the pair is
+  // active; those i lists, then those that list i.
   template <class F>
-  void forEachOf(LocalIndex i, F&& f) const {
-    for (Index e = offset[i]; e < offset[i + 1]; ++e) f(other[e], mirror[e], gradient[e], active[e] != 0);
+  void forEachOf(LocalIndex i, std::span<const Vec3> x, F&& f) const {
+    for (Index e = offset[i]; e < offset[i + 1]; ++e) {
+      const Pair& p = pair[e];
+      f(p.other, p.mirror, p.gradient(x[i] - mirrors_.point(x[p.other], p.mirror)), p.active != 0);
+    }
     for (Index k = listed_offset[i]; k < listed_offset[i + 1]; ++k) {
-      const Index e = listed_by[k];
-      f(listed_other[k], listed_mirror[k], Vec3(-mirrors_.vector(gradient[e], listed_mirror[k])), active[e] != 0);
+      const Pair& p = pair[listed_by[k]];
+      // (The listing particle's gradient as it forms it, reflected.)
+      const LocalIndex j = listed_other[k];
+      const Vec3 g = p.gradient(x[j] - mirrors_.point(x[i], p.mirror));
+      f(j, listed_mirror[k], Vec3(-mirrors_.vector(g, listed_mirror[k])), p.active != 0);
     }
   }
 
  private:
-  struct Found {
-    LocalIndex j;
-    std::uint8_t mirror;
-  };
+  // build()'s parts before and after the pass over the cell list: the images and the cells (false
+  // where there are no positions), and the lists joined in particle order and transposed.
+  bool prepare(std::span<const Vec3> x, std::span<const double> h, LocalIndex count, const MirrorBox& box,
+               const Share& share);
+  void finish(LocalIndex count);
   CellList cells_;
   Mirrors mirrors_;
+  double h_max_ = 0.0;
   std::vector<Index> count_;
-  std::vector<std::uint32_t> scratch_;     // the transpose's counters
-  std::vector<std::vector<Found>> found_;  // each thread's pairs, in particle order
+  std::vector<std::uint32_t> scratch_;    // the transpose's counters
+  std::vector<std::vector<Pair>> found_;  // each thread's pairs, in particle order
   Index self_images_ = 0;
 };
 
 template <class TakesPart>
-void Pairs::weigh(std::span<const Vec3> x, std::span<const double> h, TakesPart&& takes_part) {
-  const auto n = static_cast<LocalIndex>(offset.size()) - 1;
-#pragma omp parallel for schedule(static)
-  for (LocalIndex i = 0; i < n; ++i)
-    for (Index e = offset[i]; e < offset[i + 1]; ++e) {
-      const LocalIndex j = other[e];
-      const Vec3 d = x[i] - mirrors_.point(x[j], mirror[e]);
-      gradient[e] = CubicSpline::slopeOverDistance(d.norm(), 0.5 * (h[i] + h[j])) * d;
-      active[e] = takes_part(i, j, mirror[e], d);
+void Pairs::build(std::span<const Vec3> x, std::span<const double> h, LocalIndex count, const MirrorBox& box,
+                  const Share& share, TakesPart&& takes_part) {
+  if (!prepare(x, h, count, box, share)) return;
+  const auto n = static_cast<std::size_t>(count);
+  // The images a particle near the planes sees: those whose part of space lies within its reach.
+  // The image T x_j of j lies within the reach of x_i where j lies within it of T^-1 x_i.
+  const auto visit = [&](std::size_t i, auto&& f) {
+    const double reach = h[i] + h_max_;
+    const bool ghost = !share.own(static_cast<LocalIndex>(i));
+    mirrors_.near(x[i], reach, [&](std::uint8_t m) {
+      // Each pair once, by its lower particle (a particle's own image once).
+      const auto first = static_cast<LocalIndex>(m == 0 ? i + 1 : i);
+      cells_.forEachWithinFrom(mirrors_.point(x[i], mirrors_.inverse(m)), reach, first, [&](LocalIndex j, double d2) {
+        if (ghost && !share.own(j)) return;  // two ghosts: no own particle reads the pair
+        const double support = h[i] + h[static_cast<std::size_t>(j)];
+        if (d2 < support * support) f(j, m);
+      });
+    });
+  };
+  // One pass over the cell list: each thread lists the pairs of a contiguous block of particles in
+  // its own buffer, and the blocks are joined in particle order, so the arrays are the same for any
+  // thread count.
+  count_.assign(n, 0);
+#pragma omp parallel
+  {
+#pragma omp single
+    found_.resize(static_cast<std::size_t>(omp_get_num_threads()));
+    std::vector<Pair>& mine = found_[static_cast<std::size_t>(omp_get_thread_num())];
+    mine.clear();
+#pragma omp for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t before = mine.size();
+      visit(i, [&](LocalIndex j, std::uint8_t m) {
+        const Vec3 d = x[i] - mirrors_.point(x[static_cast<std::size_t>(j)], m);
+        const double slope = CubicSpline::slopeOverDistance(d.norm(), 0.5 * (h[i] + h[static_cast<std::size_t>(j)]));
+        mine.push_back({slope, j, m, static_cast<std::uint8_t>(takes_part(static_cast<LocalIndex>(i), j, m, d))});
+      });
+      count_[i] = static_cast<Index>(mine.size() - before);
     }
+  }
+  finish(count);
 }
 
 }  // namespace kessler::sph

@@ -101,12 +101,11 @@ TEST(SphPairs, EachParticleSeesItsPairsFromBothEnds) {
   for (const int threads : {1, 2, 3}) {
     omp_set_num_threads(threads);
     Pairs pairs;
-    pairs.build(x, h, n, axes);
-    pairs.weigh(x, h, [](LocalIndex, LocalIndex, std::uint8_t, const Vec3&) { return true; });
+    pairs.build(x, h, n, axes, {}, [](LocalIndex, LocalIndex, std::uint8_t, const Vec3&) { return true; });
     Index seen = 0;
     for (LocalIndex i = 0; i < n; ++i) {
       std::map<std::pair<LocalIndex, int>, Vec3> found;
-      pairs.forEachOf(i, [&](LocalIndex j, std::uint8_t m, const Vec3& g, bool) {
+      pairs.forEachOf(i, x, [&](LocalIndex j, std::uint8_t m, const Vec3& g, bool) {
         // (Across planes through the origin an image is its reflection alone.)
         EXPECT_TRUE(found.emplace(std::pair<LocalIndex, int>{j, pairs.mirrors().flips(m)}, g).second)
             << "pair seen twice";
