@@ -12,6 +12,8 @@
 #include <cmath>
 #include <limits>
 
+#include <omp.h>
+
 namespace kessler::sph {
 
 namespace {
@@ -319,65 +321,15 @@ void Integrator::forces() {
     }
   }
   // Each pair's force on its listing particle i, once: that on its other end j is -R times it (the
-  // image of the reaction). The viscosity's heating and signal speed are the same at both ends.
+  // image of the reaction). The viscosity's heating and signal speed are the same at both ends. Each
+  // particle's sums run over the pairs it lists, then over those that list it, in their order (a
+  // ghost's are its owner's, refreshed below). The pairs that list i are those of lower particles, so
+  // a thread that goes up its block of particles has them all at hand, just computed (still in cache),
+  // once it has computed i's own: but for those a lower block lists, summed after the barrier.
   const auto pairs = static_cast<std::size_t>(pairs_.size());
   pair_share_.resize(pairs);
-#pragma omp parallel for schedule(dynamic, 256)
-  for (LocalIndex i = 0; i < points.owned; ++i) {
-    const PairEnd& a = ends_[i];
-    for (Index e = pairs_.offset[i]; e < pairs_.offset[i + 1]; ++e) {
-      const Pair& pair = pairs_.pair[e];
-      const LocalIndex j = pair.other;
-      const PairEnd& b = ends_[j];
-      const std::uint8_t m = pair.mirror;
-      const Vec3 d = a.x - mirrors.point(b.x, m);
-      const Vec3 grad = pair.gradient(d);
-      Vec3 f = Vec3::Zero();
-      if (pair.active) {
-        f.noalias() += a.volume * b.volume * sumTimes(a.stress_b, b.stress_b, m, grad);
-        if ((a.tensile || b.tensile) && a.body == b.body && !a.broken && !b.broken) {
-          const double h_ij = 0.5 * (a.h + b.h);
-          const double reference = CubicSpline::value(0.5 * (a.spacing + b.spacing), h_ij);
-          // (The pair's kernel at |d|, as the search formed its gradient: only the pairs that need it.)
-          const double kernel = CubicSpline::value(d.norm(), h_ij);
-          const double ratio = reference > 0.0 ? std::min(kernel / reference, 1.0) : 0.0;
-          double fn = 1.0;
-          for (int k = 0; k < o.artificial_stress_exponent; ++k) fn *= ratio;
-          f.noalias() += a.mass * b.mass * fn * sumTimes(artificial_[i], artificial_[j], m, grad);
-        }
-      }
-      PairShare& share = pair_share_[e];
-      share.power = share.signal = 0.0;
-      const Vec3 v = a.v - mirrors.vector(b.v, m);
-      const double approach = v.dot(d);
-      if (approach < 0.0 && pair.active) {
-        const double h_ij = 0.5 * (a.h + b.h);
-        const double mu = h_ij * approach / (d.squaredNorm() + 0.01 * h_ij * h_ij);
-        const double rho = 0.5 * (a.density + b.density);
-        const double alpha = 0.5 * (a.alpha + b.alpha);
-        const double viscosity = alpha * (-0.5 * (a.sound + b.sound) * mu + o.viscosity_ratio * mu * mu) / rho;
-        const double mm = a.mass * b.mass;
-        f.noalias() -= mm * viscosity * grad;
-        share.power = 0.5 * mm * viscosity * v.dot(grad);
-        share.signal = -mu;
-      }
-      share.force = f;
-    }
-  }
-  // Each particle's sum over its pairs, from both ends, in a fixed order (a ghost's is its owner's,
-  // refreshed below).
   const Share own = share();
-#pragma omp parallel for schedule(static)
-  for (LocalIndex i = 0; i < points.owned; ++i) {
-    if (!own.own(i)) continue;
-    Vec3 f = Vec3::Zero();
-    double power = 0.0, signal = 0.0;
-    for (Index e = pairs_.offset[i]; e < pairs_.offset[i + 1]; ++e) {
-      const PairShare& share = pair_share_[e];
-      f += share.force;
-      power += share.power;
-      signal = std::max(signal, share.signal);
-    }
+  const auto sumListed = [&](LocalIndex i, Vec3 f, double power, double signal) {
     for (Index k = pairs_.listed_offset[i]; k < pairs_.listed_offset[i + 1]; ++k) {
       const PairShare& share = pair_share_[pairs_.listed_by[k]];
       f -= mirrors.vector(share.force, pairs_.listed_mirror[k]);
@@ -387,6 +339,79 @@ void Integrator::forces() {
     acceleration_[i] = f / points.mass[i];
     viscous_power_[i] = power;
     signal_[i] = signal;
+  };
+#pragma omp parallel
+  {
+    // Blocks of about equal numbers of pairs.
+    const int t = omp_get_thread_num(), nt = omp_get_num_threads();
+    const auto blockStart = [&](int u) {
+      if (u == nt) return points.owned;
+      const Index target = static_cast<Index>(pairs) * u / nt;
+      return static_cast<LocalIndex>(std::lower_bound(pairs_.offset.begin(), pairs_.offset.end() - 1, target) -
+                                     pairs_.offset.begin());
+    };
+    const LocalIndex begin = blockStart(t), end = std::max(begin, blockStart(t + 1));
+    const auto listedHere = [&](LocalIndex i) {
+      return pairs_.listed_offset[i] == pairs_.listed_offset[i + 1] ||
+             pairs_.listed_other[pairs_.listed_offset[i]] >= begin;  // (the first is the lowest)
+    };
+    for (LocalIndex i = begin; i < end; ++i) {
+      const PairEnd& a = ends_[i];
+      Vec3 force = Vec3::Zero();
+      double power = 0.0, signal = 0.0;
+      for (Index e = pairs_.offset[i]; e < pairs_.offset[i + 1]; ++e) {
+        const Pair& pair = pairs_.pair[e];
+        const LocalIndex j = pair.other;
+        const PairEnd& b = ends_[j];
+        const std::uint8_t m = pair.mirror;
+        const Vec3 d = a.x - mirrors.point(b.x, m);
+        const Vec3 grad = pair.gradient(d);
+        Vec3 f = Vec3::Zero();
+        if (pair.active) {
+          f.noalias() += a.volume * b.volume * sumTimes(a.stress_b, b.stress_b, m, grad);
+          if ((a.tensile || b.tensile) && a.body == b.body && !a.broken && !b.broken) {
+            const double h_ij = 0.5 * (a.h + b.h);
+            const double reference = CubicSpline::value(0.5 * (a.spacing + b.spacing), h_ij);
+            // (The pair's kernel at |d|, as the search formed its gradient: only the pairs that need it.)
+            const double kernel = CubicSpline::value(d.norm(), h_ij);
+            const double ratio = reference > 0.0 ? std::min(kernel / reference, 1.0) : 0.0;
+            double fn = 1.0;
+            for (int k = 0; k < o.artificial_stress_exponent; ++k) fn *= ratio;
+            f.noalias() += a.mass * b.mass * fn * sumTimes(artificial_[i], artificial_[j], m, grad);
+          }
+        }
+        PairShare& share = pair_share_[e];
+        share.power = share.signal = 0.0;
+        const Vec3 v = a.v - mirrors.vector(b.v, m);
+        const double approach = v.dot(d);
+        if (approach < 0.0 && pair.active) {
+          const double h_ij = 0.5 * (a.h + b.h);
+          const double mu = h_ij * approach / (d.squaredNorm() + 0.01 * h_ij * h_ij);
+          const double rho = 0.5 * (a.density + b.density);
+          const double alpha = 0.5 * (a.alpha + b.alpha);
+          const double viscosity = alpha * (-0.5 * (a.sound + b.sound) * mu + o.viscosity_ratio * mu * mu) / rho;
+          const double mm = a.mass * b.mass;
+          f.noalias() -= mm * viscosity * grad;
+          share.power = 0.5 * mm * viscosity * v.dot(grad);
+          share.signal = -mu;
+        }
+        share.force = f;
+        force += f;
+        power += share.power;
+        signal = std::max(signal, share.signal);
+      }
+      if (!own.own(i)) continue;
+      if (listedHere(i)) {
+        sumListed(i, force, power, signal);
+      } else {  // (kept for after the barrier)
+        acceleration_[i] = force;
+        viscous_power_[i] = power;
+        signal_[i] = signal;
+      }
+    }
+#pragma omp barrier
+    for (LocalIndex i = begin; i < end; ++i)
+      if (own.own(i) && !listedHere(i)) sumListed(i, acceleration_[i], viscous_power_[i], signal_[i]);
   }
   // A ghost's sums lack the pairs this rank does not hold (the kick and the heating read them).
   if (distribution_) {
