@@ -37,6 +37,7 @@ struct Pair {
 
   Vec3 gradient(const Vec3& d) const { return slope * d; }
 };
+static_assert(sizeof(Pair) == 16);
 
 struct Pairs {
   std::vector<Index> offset;  // the pairs particle i lists are pair[offset[i] .. offset[i + 1])
