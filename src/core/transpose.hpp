@@ -18,6 +18,17 @@
 
 namespace kessler {
 
+// The first row of block u of nt blocks of compressed rows (row r's entries [offset[r], offset[r + 1]))
+// that hold about equal numbers of entries rather than rows (rows differ in length); u = nt gives the
+// number of rows. A pass that splits rows among threads by it balances their entries.
+inline LocalIndex entryBlockStart(std::span<const Index> offset, int u, int nt) {
+  const auto rows = offset.empty() ? LocalIndex{0} : static_cast<LocalIndex>(offset.size() - 1);
+  if (u >= nt) return rows;
+  const Index target = (offset.empty() ? 0 : offset.back()) * u / nt;
+  return std::min(static_cast<LocalIndex>(std::lower_bound(offset.begin(), offset.end(), target) - offset.begin()),
+                  rows);
+}
+
 // column(k, r): the column of entry k of row r, or -1 for an entry the transpose leaves out.
 // Fills column_offset (size columns + 1), calls resize(total) with the number of entries listed,
 // then emit(slot, k, r) for each, slot its place in [column_offset[c], column_offset[c + 1]).
@@ -26,7 +37,6 @@ namespace kessler {
 template <class Column, class Resize, class Emit>
 void transposeRows(std::span<const Index> offset, LocalIndex columns, std::vector<Index>& column_offset,
                    std::vector<std::uint32_t>& scratch, Column&& column, Resize&& resize, Emit&& emit) {
-  const auto rows = offset.empty() ? LocalIndex{0} : static_cast<LocalIndex>(offset.size() - 1);
   const Index entries = offset.empty() ? 0 : offset.back();
   KESSLER_VERIFY(entries <= Index{std::numeric_limits<std::uint32_t>::max()},
                  "{} entries on one rank: more than a transpose's 32-bit counters hold", entries);
@@ -38,14 +48,8 @@ void transposeRows(std::span<const Index> offset, LocalIndex columns, std::vecto
   {
     const int t = omp_get_thread_num();
     const int nt = omp_get_num_threads();
-    // Blocks of equal numbers of entries rather than rows (rows differ in length); the result does
-    // not depend on where the blocks end.
-    auto blockStart = [&](int u) {
-      const Index target = entries * u / nt;
-      return static_cast<LocalIndex>(std::lower_bound(offset.begin(), offset.end(), target) - offset.begin());
-    };
-    const LocalIndex begin = std::min(blockStart(t), rows);
-    const LocalIndex end = t + 1 == nt ? rows : std::min(blockStart(t + 1), rows);
+    // Blocks of equal numbers of entries; the result does not depend on where the blocks end.
+    const LocalIndex begin = entryBlockStart(offset, t, nt), end = entryBlockStart(offset, t + 1, nt);
     std::uint32_t* count = scratch.data() + static_cast<std::size_t>(t) * n;
     std::fill(count, count + n, std::uint32_t{0});
     for (LocalIndex r = begin; r < end; ++r)

@@ -1,6 +1,7 @@
 #include "solver/sph/integrator.hpp"
 
 #include "core/error.hpp"
+#include "core/transpose.hpp"
 #include "solver/common/body_laws.hpp"
 #include "solver/common/stable_step.hpp"
 #include "solver/sph/kernel.hpp"
@@ -221,15 +222,13 @@ void Integrator::search() {
                  const bool pressed = points.stress[i].trace() < 0.0 && points.stress[j].trace() < 0.0;
                  return (approaching && d.squaredNorm() < touching * touching) || pressed;
                });
-  const Mirrors& mirrors = pairs_.mirrors();
   std::int64_t uncorrected = 0;
 #pragma omp parallel for schedule(static) reduction(+ : uncorrected)
   for (LocalIndex i = 0; i < points.owned; ++i) {
     if (!own.own(i)) continue;  // a ghost's correction is its owner's (refreshed below)
     Mat3 moment = Mat3::Zero();
-    pairs_.forEachOf(i, points.x, [&](LocalIndex j, std::uint8_t m, const Vec3& grad, bool active) {
+    pairs_.forEachOf(i, points.x, [&](LocalIndex j, std::uint8_t, const Vec3& d, const Vec3& grad, bool active) {
       if (!active) return;
-      const Vec3 d = points.x[i] - mirrors.point(points.x[j], m);
       moment.noalias() -= points.volume[j] * d * grad.transpose();
       if (points.debris(i) && !points.debris(j) && points.body[j] != points.body[i]) struck_[i] = points.body[j];
     });
@@ -344,13 +343,7 @@ void Integrator::forces() {
   {
     // Blocks of about equal numbers of pairs.
     const int t = omp_get_thread_num(), nt = omp_get_num_threads();
-    const auto blockStart = [&](int u) {
-      if (u == nt) return points.owned;
-      const Index target = static_cast<Index>(pairs) * u / nt;
-      return static_cast<LocalIndex>(std::lower_bound(pairs_.offset.begin(), pairs_.offset.end() - 1, target) -
-                                     pairs_.offset.begin());
-    };
-    const LocalIndex begin = blockStart(t), end = std::max(begin, blockStart(t + 1));
+    const LocalIndex begin = entryBlockStart(pairs_.offset, t, nt), end = entryBlockStart(pairs_.offset, t + 1, nt);
     const auto listedHere = [&](LocalIndex i) {
       return pairs_.listed_offset[i] == pairs_.listed_offset[i + 1] ||
              pairs_.listed_other[pairs_.listed_offset[i]] >= begin;  // (the first is the lowest)
@@ -434,7 +427,7 @@ void Integrator::deform(double dt) {
     points.dF[i].setIdentity();
     if (points.debris(i)) continue;
     Mat3 gradient = Mat3::Zero();
-    pairs_.forEachOf(i, points.x, [&](LocalIndex j, std::uint8_t m, const Vec3& grad, bool active) {
+    pairs_.forEachOf(i, points.x, [&](LocalIndex j, std::uint8_t m, const Vec3&, const Vec3& grad, bool active) {
       if (active)
         gradient.noalias() += points.volume[j] * (mirrors.vector(points.v[j], m) - points.v[i]) * grad.transpose();
     });

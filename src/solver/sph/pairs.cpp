@@ -6,8 +6,8 @@
 
 namespace kessler::sph {
 
-bool Pairs::prepare(std::span<const Vec3> x, std::span<const double> h, LocalIndex count, const MirrorBox& box,
-                    const Share& share) {
+double Pairs::prepare(std::span<const Vec3> x, std::span<const double> h, LocalIndex count, const MirrorBox& box,
+                      const Share& share) {
   const auto n = static_cast<std::size_t>(count);
   // The whole run's largest smoothing length and cell size (a distributed run's ranks agree on
   // them, so that each particle meets its candidates in the one process's order).
@@ -27,12 +27,11 @@ bool Pairs::prepare(std::span<const Vec3> x, std::span<const double> h, LocalInd
     *this = Pairs{};
     offset.assign(1, 0);
     listed_offset.assign(1, 0);
-    return false;
+    return -1.0;
   }
-  h_max_ = h_max;
   offset.assign(n + 1, 0);
   cells_.build(x, count, cell_size, /*enlarge=*/!share.comm);
-  return true;
+  return h_max;
 }
 
 void Pairs::finish(LocalIndex count) {

@@ -64,33 +64,36 @@ struct Pairs {
   // Each particle's pairs counted from both ends (a particle's pair with its own image once).
   Index neighbourCount() const { return 2 * size() - self_images_; }
 
-  // f(j, mirror, g, active) for each pair of particle i, at the positions x of the search: the other
-  // particle j (whose image across `mirror` i meets), i's kernel gradient g and whether the pair is
-  // active; those i lists, then those that list i.
+  // f(j, mirror, d, g, active) for each pair of particle i, at the positions x of the search: the
+  // other particle j (whose image across `mirror` i meets), i's separation from that image
+  // d = x_i - T x_j, i's kernel gradient g and whether the pair is active; those i lists, then those
+  // that list i.
   template <class F>
   void forEachOf(LocalIndex i, std::span<const Vec3> x, F&& f) const {
     for (Index e = offset[i]; e < offset[i + 1]; ++e) {
       const Pair& p = pair[e];
-      f(p.other, p.mirror, p.gradient(x[i] - mirrors_.point(x[p.other], p.mirror)), p.active != 0);
+      const Vec3 d = x[i] - mirrors_.point(x[p.other], p.mirror);
+      f(p.other, p.mirror, d, p.gradient(d), p.active != 0);
     }
     for (Index k = listed_offset[i]; k < listed_offset[i + 1]; ++k) {
       const Pair& p = pair[listed_by[k]];
-      // (The listing particle's gradient as it forms it, reflected.)
       const LocalIndex j = listed_other[k];
+      const std::uint8_t m = listed_mirror[k];
+      // (The listing particle's gradient as it forms it, reflected.)
       const Vec3 g = p.gradient(x[j] - mirrors_.point(x[i], p.mirror));
-      f(j, listed_mirror[k], Vec3(-mirrors_.vector(g, listed_mirror[k])), p.active != 0);
+      f(j, m, Vec3(x[i] - mirrors_.point(x[j], m)), Vec3(-mirrors_.vector(g, m)), p.active != 0);
     }
   }
 
  private:
-  // build()'s parts before and after the pass over the cell list: the images and the cells (false
-  // where there are no positions), and the lists joined in particle order and transposed.
-  bool prepare(std::span<const Vec3> x, std::span<const double> h, LocalIndex count, const MirrorBox& box,
-               const Share& share);
+  // build()'s parts before and after the pass over the cell list: the images and the cells, and the
+  // whole run's largest smoothing length (negative where there are no positions); the lists joined in
+  // particle order and transposed.
+  double prepare(std::span<const Vec3> x, std::span<const double> h, LocalIndex count, const MirrorBox& box,
+                 const Share& share);
   void finish(LocalIndex count);
   CellList cells_;
   Mirrors mirrors_;
-  double h_max_ = 0.0;
   std::vector<Index> count_;
   std::vector<std::uint32_t> scratch_;    // the transpose's counters
   std::vector<std::vector<Pair>> found_;  // each thread's pairs, in particle order
@@ -100,12 +103,13 @@ struct Pairs {
 template <class TakesPart>
 void Pairs::build(std::span<const Vec3> x, std::span<const double> h, LocalIndex count, const MirrorBox& box,
                   const Share& share, TakesPart&& takes_part) {
-  if (!prepare(x, h, count, box, share)) return;
+  const double h_max = prepare(x, h, count, box, share);
+  if (h_max < 0.0) return;
   const auto n = static_cast<std::size_t>(count);
   // The images a particle near the planes sees: those whose part of space lies within its reach.
   // The image T x_j of j lies within the reach of x_i where j lies within it of T^-1 x_i.
   const auto visit = [&](std::size_t i, auto&& f) {
-    const double reach = h[i] + h_max_;
+    const double reach = h[i] + h_max;
     const bool ghost = !share.own(static_cast<LocalIndex>(i));
     mirrors_.near(x[i], reach, [&](std::uint8_t m) {
       // Each pair once, by its lower particle (a particle's own image once).

@@ -105,7 +105,7 @@ TEST(SphPairs, EachParticleSeesItsPairsFromBothEnds) {
     Index seen = 0;
     for (LocalIndex i = 0; i < n; ++i) {
       std::map<std::pair<LocalIndex, int>, Vec3> found;
-      pairs.forEachOf(i, x, [&](LocalIndex j, std::uint8_t m, const Vec3& g, bool) {
+      pairs.forEachOf(i, x, [&](LocalIndex j, std::uint8_t m, const Vec3&, const Vec3& g, bool) {
         // (Across planes through the origin an image is its reflection alone.)
         EXPECT_TRUE(found.emplace(std::pair<LocalIndex, int>{j, pairs.mirrors().flips(m)}, g).second)
             << "pair seen twice";
