@@ -226,12 +226,13 @@ void Integrator::search() {
 #pragma omp parallel for schedule(static) reduction(+ : uncorrected)
   for (LocalIndex i = 0; i < points.owned; ++i) {
     if (!own.own(i)) continue;  // a ghost's correction is its owner's (refreshed below)
-    Mat3 moment = Mat3::Zero();
-    pairs_.forEachOf(i, points.x, [&](LocalIndex j, std::uint8_t, const Vec3& d, const Vec3& grad, bool active) {
+    lanes::OuterSum sum;
+    pairs_.forEachOf(i, points.x, [&](LocalIndex j, std::uint8_t, lanes::V d, lanes::V grad, bool active) {
       if (!active) return;
-      moment.noalias() -= points.volume[j] * d * grad.transpose();
+      sum.subtract(lanes::times(points.volume[j], d), grad);
       if (points.debris(i) && !points.debris(j) && points.body[j] != points.body[i]) struck_[i] = points.body[j];
     });
+    const Mat3 moment = sum.matrix();
     // The correction where the moment is well conditioned: its smallest singular value at least a
     // tenth of an interior particle's (1), as at a surface, an edge or a corner of a body. Near the
     // identity, as within a body, that needs no eigenvalue: the smallest singular value of M is at
@@ -426,12 +427,15 @@ void Integrator::deform(double dt) {
     if (!own.own(i)) continue;  // a ghost's deformation is its owner's (refreshed below)
     points.dF[i].setIdentity();
     if (points.debris(i)) continue;
-    Mat3 gradient = Mat3::Zero();
-    pairs_.forEachOf(i, points.x, [&](LocalIndex j, std::uint8_t m, const Vec3&, const Vec3& grad, bool active) {
-      if (active)
-        gradient.noalias() += points.volume[j] * (mirrors.vector(points.v[j], m) - points.v[i]) * grad.transpose();
+    lanes::OuterSum gradient;
+    const lanes::V vi = lanes::load(points.v[i]);
+    pairs_.forEachOf(i, points.x, [&](LocalIndex j, std::uint8_t m, lanes::V, lanes::V grad, bool active) {
+      if (!active) return;
+      // (An image's velocity reflected apart: a load of a vector just stored would wait for the stores.)
+      const lanes::V vj = m == 0 ? lanes::load(points.v[j]) : lanes::load(mirrors.vector(points.v[j], m));
+      gradient.add(lanes::times(points.volume[j], lanes::minus(vj, vi)), grad);
     });
-    const Mat3 L = gradient * correction_[i];
+    const Mat3 L = gradient.matrix() * correction_[i];
     switchViscosity(i, L.trace(), dt);
     const Mat3 half = 0.5 * dt * L;
     const Mat3 dF = (Mat3::Identity() - half).inverse() * (Mat3::Identity() + half);

@@ -11,6 +11,7 @@
 // -R grad_i W: what is computed once per pair reaches both ends, j's share reflected. Each particle gathers its pairs'
 // shares in a fixed order (those it lists, then those that list it, in the order of their listing particle), the same
 // for any thread count.
+#include "core/lanes.hpp"
 #include "search/cell_list.hpp"
 #include "solver/common/mirror.hpp"
 #include "solver/common/own_sums.hpp"
@@ -66,22 +67,40 @@ struct Pairs {
 
   // f(j, mirror, d, g, active) for each pair of particle i, at the positions x of the search: the
   // other particle j (whose image across `mirror` i meets), i's separation from that image
-  // d = x_i - T x_j, i's kernel gradient g and whether the pair is active; those i lists, then those
-  // that list i.
+  // d = x_i - T x_j and i's kernel gradient g, both in lanes (core/lanes.hpp), and whether the pair
+  // is active; those i lists, then those that list i.
   template <class F>
   void forEachOf(LocalIndex i, std::span<const Vec3> x, F&& f) const {
+    const lanes::V xi = lanes::load(x[i]);
+    // (A pair across no mirror, from either end: d = x_i - x_j and g = slope d, the listing
+    // particle's gradient reversed to the bit.)
     for (Index e = offset[i]; e < offset[i + 1]; ++e) {
       const Pair& p = pair[e];
-      const Vec3 d = x[i] - mirrors_.point(x[p.other], p.mirror);
-      f(p.other, p.mirror, d, p.gradient(d), p.active != 0);
+      lanes::V d, g;
+      if (p.mirror == 0) {
+        d = lanes::minus(xi, lanes::load(x[p.other]));
+        g = lanes::times(p.slope, d);
+      } else {
+        const Vec3 dm = x[i] - mirrors_.point(x[p.other], p.mirror);
+        d = lanes::load(dm);
+        g = lanes::load(p.gradient(dm));
+      }
+      f(p.other, p.mirror, d, g, p.active != 0);
     }
     for (Index k = listed_offset[i]; k < listed_offset[i + 1]; ++k) {
       const Pair& p = pair[listed_by[k]];
       const LocalIndex j = listed_other[k];
       const std::uint8_t m = listed_mirror[k];
-      // (The listing particle's gradient as it forms it, reflected.)
-      const Vec3 g = p.gradient(x[j] - mirrors_.point(x[i], p.mirror));
-      f(j, m, Vec3(x[i] - mirrors_.point(x[j], m)), Vec3(-mirrors_.vector(g, m)), p.active != 0);
+      lanes::V d, g;
+      if (m == 0) {
+        d = lanes::minus(xi, lanes::load(x[j]));
+        g = lanes::times(p.slope, d);
+      } else {
+        // (The listing particle's gradient as it forms it, reflected.)
+        d = lanes::load(Vec3(x[i] - mirrors_.point(x[j], m)));
+        g = lanes::load(Vec3(-mirrors_.vector(p.gradient(x[j] - mirrors_.point(x[i], p.mirror)), m)));
+      }
+      f(j, m, d, g, p.active != 0);
     }
   }
 

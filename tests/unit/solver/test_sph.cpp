@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -85,8 +86,9 @@ TEST(SphPairs, EachParticleSeesItsPairsFromBothEnds) {
   const auto n = static_cast<LocalIndex>(x.size());
   MirrorBox axes;  // symmetry planes x = 0 and z = 0
   axes.lo[0] = axes.lo[2] = 0.0;
-  // What a search of every pair finds, per particle: (j, mirror) -> i's gradient.
-  std::vector<std::map<std::pair<LocalIndex, int>, Vec3>> expected(x.size());
+  // What a search of every pair finds, per particle: (j, mirror) -> i's separation and gradient.
+  using Seen = std::map<std::pair<LocalIndex, int>, std::array<Vec3, 2>>;
+  std::vector<Seen> expected(x.size());
   for (LocalIndex i = 0; i < n; ++i)
     for (LocalIndex j = 0; j < n; ++j)
       for (const int m : {0, 1, 4, 5}) {
@@ -95,7 +97,7 @@ TEST(SphPairs, EachParticleSeesItsPairsFromBothEnds) {
         const double r = d.norm(), h_ij = 0.5 * (h[i] + h[j]);
         // (The kernel's own form of the gradient: this test is of the pairs, the kernel's test above
         // checks the form against the slope.)
-        if (r < h[i] + h[j]) expected[i][{j, m}] = CubicSpline::slopeOverDistance(r, h_ij) * d;
+        if (r < h[i] + h[j]) expected[i][{j, m}] = {d, CubicSpline::slopeOverDistance(r, h_ij) * d};
       }
   const int before = omp_get_max_threads();
   for (const int threads : {1, 2, 3}) {
@@ -104,17 +106,19 @@ TEST(SphPairs, EachParticleSeesItsPairsFromBothEnds) {
     pairs.build(x, h, n, axes, {}, [](LocalIndex, LocalIndex, std::uint8_t, const Vec3&) { return true; });
     Index seen = 0;
     for (LocalIndex i = 0; i < n; ++i) {
-      std::map<std::pair<LocalIndex, int>, Vec3> found;
-      pairs.forEachOf(i, x, [&](LocalIndex j, std::uint8_t m, const Vec3&, const Vec3& g, bool) {
+      Seen found;
+      pairs.forEachOf(i, x, [&](LocalIndex j, std::uint8_t m, lanes::V d, lanes::V g, bool) {
         // (Across planes through the origin an image is its reflection alone.)
-        EXPECT_TRUE(found.emplace(std::pair<LocalIndex, int>{j, pairs.mirrors().flips(m)}, g).second)
+        const std::array<Vec3, 2> seen_here{lanes::vec3(d), lanes::vec3(g)};
+        EXPECT_TRUE(found.emplace(std::pair<LocalIndex, int>{j, pairs.mirrors().flips(m)}, seen_here).second)
             << "pair seen twice";
       });
       ASSERT_EQ(found.size(), expected[i].size()) << "particle " << i << ", " << threads << " threads";
-      for (const auto& [key, g] : expected[i]) {
+      for (const auto& [key, dg] : expected[i]) {
         ASSERT_TRUE(found.count(key)) << "particle " << i << " misses " << key.first << " (mirror " << key.second
                                       << ")";
-        EXPECT_LE((found[key] - g).norm(), 1e-12 * g.norm()) << "particle " << i;
+        EXPECT_LE((found[key][0] - dg[0]).norm(), 1e-12 * dg[0].norm()) << "particle " << i;
+        EXPECT_LE((found[key][1] - dg[1]).norm(), 1e-12 * dg[1].norm()) << "particle " << i;
       }
       seen += static_cast<Index>(found.size());
     }
