@@ -16,8 +16,11 @@ namespace kessler::lanes {
 
 using V = __m256d;
 
+inline V load(const double* three) {
+  return _mm256_maskload_pd(three, _mm256_setr_epi64x(-1, -1, -1, 0));
+}
 inline V load(const Vec3& v) {
-  return _mm256_maskload_pd(v.data(), _mm256_setr_epi64x(-1, -1, -1, 0));
+  return load(v.data());
 }
 inline Vec3 vec3(V v) {
   alignas(32) double a[4];
@@ -29,6 +32,13 @@ inline V minus(V a, V b) {
 }
 inline V times(double s, V v) {
   return _mm256_mul_pd(_mm256_set1_pd(s), v);
+}
+// (A + B) g, column by column.
+inline V sumTimes(const Mat3& A, const Mat3& B, const Vec3& g) {
+  const auto column = [&](int c) { return _mm256_add_pd(load(&A(0, c)), load(&B(0, c))); };
+  V t = _mm256_mul_pd(column(0), _mm256_set1_pd(g[0]));
+  t = _mm256_fmadd_pd(column(1), _mm256_set1_pd(g[1]), t);
+  return _mm256_fmadd_pd(column(2), _mm256_set1_pd(g[2]), t);
 }
 
 // A sum of outer products w g^T, column by column.
@@ -69,6 +79,9 @@ inline V minus(const V& a, const V& b) {
 }
 inline V times(double s, const V& v) {
   return s * v;
+}
+inline V sumTimes(const Mat3& A, const Mat3& B, const Vec3& g) {
+  return (A.col(0) + B.col(0)) * g[0] + (A.col(1) + B.col(1)) * g[1] + (A.col(2) + B.col(2)) * g[2];
 }
 
 class OuterSum {

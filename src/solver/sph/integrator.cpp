@@ -267,10 +267,7 @@ void Integrator::forces() {
   // sum stored in pairs of entries and read back by columns, or a vector stored entry by entry and
   // read back in pairs, stalls each load that straddles two stores.
   const auto sumTimes = [&](const Mat3& A, const Mat3& B, std::uint8_t m, const Vec3& g) -> Vec3 {
-    const auto times = [&](const Mat3& Bm) {
-      return Vec3((A.col(0) + Bm.col(0)) * g[0] + (A.col(1) + Bm.col(1)) * g[1] + (A.col(2) + Bm.col(2)) * g[2]);
-    };
-    return m == 0 ? times(B) : times(mirrors.tensor(B, m));
+    return lanes::vec3(m == 0 ? lanes::sumTimes(A, B, g) : lanes::sumTimes(A, mirrors.tensor(B, m), g));
   };
   const auto n = static_cast<std::size_t>(points.owned);
   acceleration_.resize(n);
