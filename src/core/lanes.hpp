@@ -1,7 +1,9 @@
 #pragma once
-// Three-vectors in the four lanes of an AVX register (the fourth lane unused), for the pair loops
-// whose sums are 3 x 3 outer products: a pair's term is three fused multiply-adds on whole columns,
-// where Eigen's 3-vectors take a two-lane and a one-lane operation for each. Each lane does what the
+// Three-vectors in the four lanes of an AVX register (the fourth lane unused), for pair loops whose
+// terms are 3 x 3: an outer product added to a sum is three fused multiply-adds on whole columns,
+// and a matrix times a vector three column operations, where Eigen's 3-vectors take a two-lane and
+// a one-lane operation for each. (Loads are masked: none reads past an array. A load of a vector
+// just stored waits for the stores: load the data where it lies.) Each lane does what the
 // scalar code does to its entry (a product, a difference, a fused multiply-add), so the sums have
 // the scalar code's bits. Without AVX2 and FMA the same functions work on Vec3.
 #include "core/types.hpp"
@@ -68,6 +70,9 @@ class OuterSum {
 
 using V = Vec3;
 
+inline V load(const double* three) {
+  return {three[0], three[1], three[2]};
+}
 inline V load(const Vec3& v) {
   return v;
 }

@@ -263,9 +263,9 @@ void Integrator::forces() {
   const PointStore& points = model_.points;
   const Mirrors& mirrors = pairs_.mirrors();
   const SphOptions& o = settings_.sph;
-  // (A + T B) g for the tensors A of i and B of j seen from i, column by column in registers: a 3 x 3
-  // sum stored in pairs of entries and read back by columns, or a vector stored entry by entry and
-  // read back in pairs, stalls each load that straddles two stores.
+  // (A + T B) g for the tensors A of i and B of j seen from i, on whole columns in AVX lanes, loaded
+  // from where they lie (a 3 x 3 sum stored and read back by columns would stall each load that
+  // straddles two stores: only an image's tensor is formed first).
   const auto sumTimes = [&](const Mat3& A, const Mat3& B, std::uint8_t m, const Vec3& g) -> Vec3 {
     return lanes::vec3(m == 0 ? lanes::sumTimes(A, B, g) : lanes::sumTimes(A, mirrors.tensor(B, m), g));
   };
