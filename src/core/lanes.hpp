@@ -5,7 +5,10 @@
 // a one-lane operation for each. (Loads are masked: none reads past an array. A load of a vector
 // just stored waits for the stores: load the data where it lies.) Each lane does what the
 // scalar code does to its entry (a product, a difference, a fused multiply-add), so the sums have
-// the scalar code's bits. Without AVX2 and FMA the same functions work on Vec3.
+// the scalar code's bits; each use was checked so, to the last digit of the verification problems.
+// (Not every Eigen expression can be matched: OTM's assembly, f += A g, is compiled with two rows
+// in a register and the third contracted in another order, so it stays in Eigen.) Without AVX2
+// and FMA the same functions work on Vec3.
 #include "core/types.hpp"
 
 #if defined(__AVX2__) && defined(__FMA__)
@@ -23,6 +26,9 @@ inline V load(const double* three) {
 }
 inline V load(const Vec3& v) {
   return load(v.data());
+}
+inline V zero() {
+  return _mm256_setzero_pd();
 }
 inline Vec3 vec3(V v) {
   alignas(32) double a[4];
@@ -43,9 +49,20 @@ inline V sumTimes(const Mat3& A, const Mat3& B, const Vec3& g) {
   return _mm256_fmadd_pd(column(2), _mm256_set1_pd(g[2]), t);
 }
 
+// acc + s v.
+inline V plusScaled(V acc, double s, V v) {
+  return _mm256_fmadd_pd(_mm256_set1_pd(s), v, acc);
+}
 // A sum of outer products w g^T, column by column.
 class OuterSum {
  public:
+  OuterSum() = default;
+  explicit OuterSum(const Mat3& start) : c_{load(&start(0, 0)), load(&start(0, 1)), load(&start(0, 2))} {}
+  void add(V w, const Vec3& g) {
+    c_[0] = _mm256_fmadd_pd(w, _mm256_set1_pd(g[0]), c_[0]);
+    c_[1] = _mm256_fmadd_pd(w, _mm256_set1_pd(g[1]), c_[1]);
+    c_[2] = _mm256_fmadd_pd(w, _mm256_set1_pd(g[2]), c_[2]);
+  }
   void add(V w, V g) {
     c_[0] = _mm256_fmadd_pd(w, _mm256_permute4x64_pd(g, 0x00), c_[0]);
     c_[1] = _mm256_fmadd_pd(w, _mm256_permute4x64_pd(g, 0x55), c_[1]);
@@ -76,6 +93,9 @@ inline V load(const double* three) {
 inline V load(const Vec3& v) {
   return v;
 }
+inline V zero() {
+  return Vec3::Zero();
+}
 inline Vec3 vec3(const V& v) {
   return v;
 }
@@ -89,8 +109,14 @@ inline V sumTimes(const Mat3& A, const Mat3& B, const Vec3& g) {
   return (A.col(0) + B.col(0)) * g[0] + (A.col(1) + B.col(1)) * g[1] + (A.col(2) + B.col(2)) * g[2];
 }
 
+inline V plusScaled(const V& acc, double s, const V& v) {
+  return acc + s * v;
+}
+
 class OuterSum {
  public:
+  OuterSum() = default;
+  explicit OuterSum(const Mat3& start) : m_(start) {}
   void add(const V& w, const V& g) { m_.noalias() += w * g.transpose(); }
   void subtract(const V& w, const V& g) { m_.noalias() -= w * g.transpose(); }
   Mat3 matrix() const { return m_; }

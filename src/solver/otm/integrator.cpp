@@ -2,6 +2,7 @@
 
 #include "approx/lme.hpp"
 #include "core/error.hpp"
+#include "core/lanes.hpp"
 #include "solver/common/body_laws.hpp"
 #include "solver/common/debris_contact.hpp"
 #include "solver/common/release.hpp"
@@ -411,17 +412,20 @@ void Integrator::updatePoints() {
       points.dF[p].setIdentity();
       continue;
     }
-    Vec3 dx = Vec3::Zero(), dv = Vec3::Zero();
-    Mat3 dF = Mat3::Identity(), dv_grad = Mat3::Zero();
+    lanes::V dx_sum = lanes::zero(), dv_sum = lanes::zero();
+    lanes::OuterSum dF_sum(Mat3::Identity()), dv_grad_sum;
     double dv2 = 0.0;  // sum_a N_a |dv_a|^2
     for (Index e = conn.offset[p]; e < conn.offset[p + 1]; ++e) {
       const NodeIncrement& node = increment_[conn.node[e]];
-      dx += conn.N[e] * node.du;
-      dv += conn.N[e] * node.dv;
+      const lanes::V du = lanes::load(node.du), dv_a = lanes::load(node.dv);
+      dx_sum = lanes::plusScaled(dx_sum, conn.N[e], du);
+      dv_sum = lanes::plusScaled(dv_sum, conn.N[e], dv_a);
       dv2 += conn.N[e] * node.dv.squaredNorm();
-      dF.noalias() += node.du * conn.dN[e].transpose();
-      dv_grad.noalias() += node.dv * conn.dN[e].transpose();
+      dF_sum.add(du, conn.dN[e]);
+      dv_grad_sum.add(dv_a, conn.dN[e]);
     }
+    const Vec3 dx = lanes::vec3(dx_sum), dv = lanes::vec3(dv_sum);
+    const Mat3 dF = dF_sum.matrix(), dv_grad = dv_grad_sum.matrix();
     // The kinetic energy the transfer takes from the point (docs/theory.md §4 step 4): half its mass
     // times the spread of its nodes' increments, sum_a N_a |dv_a - dv|^2 (never negative: N >= 0,
     // sum N = 1). It becomes heat, so the step conserves energy as the nodes' leapfrog does.
