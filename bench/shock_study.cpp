@@ -65,9 +65,10 @@ int main(int argc, char** argv) {
         mesh, r.points, r.steps, r.density, 100 * (r.density / r.reference_density - 1), r.packed_density,
         r.centre_density, r.shock_radius, r.reference_shock_radius, 100 * r.energy_error);
     if (!profile) continue;
-    fmt::print("{:>7} {:>7} {:>7} {:>7}\n", "r", "rho", "v_r", "e");
+    fmt::print("{:>7} {:>7} {:>7} {:>7} {:>7}\n", "r", "rho", "v_r", "e", "packed");
     for (const kessler::verify::Shell& s : r.profile)
-      fmt::print("{:7.4f} {:7.2f} {:7.3f} {:7.3f}\n", s.radius, s.density, s.radial_velocity, s.energy);
+      fmt::print("{:7.4f} {:7.2f} {:7.3f} {:7.3f} {:7.2f}\n", s.radius, s.density, s.radial_velocity, s.energy,
+                 s.packed_density);
   }
   for (int i = first; !noh && i < argc; ++i) {
     const double mesh = std::atof(argv[i]) * 1e-3;

@@ -89,7 +89,8 @@ NohResult runNoh3d(double mesh_size, MethodSettings settings, double end_time) {
   for (int s = 0; s < shells; ++s)
     if (shell_mass[s] > 0.0)
       r.profile.push_back({dr * (s + 0.5), shell_mass[s] / shell_volume[s], shell_momentum[s] / shell_mass[s],
-                           shell_energy[s] / shell_mass[s]});
+                           shell_energy[s] / shell_mass[s],
+                           shell_mass[s] / (M_PI / 6.0 * (std::pow(dr * (s + 1), 3) - std::pow(dr * s, 3)))});
   // The front: the outermost shell where the radial velocity has risen above half the inflow
   // speed (the gas behind the shock is at rest, ahead of it flows in at unit speed).
   for (int s = shells - 1; s > 0; --s) {
