@@ -194,8 +194,11 @@ double Integrator::meanNeighbours() const {
 // viscosity (those within a body always; across bodies, or with debris, while the two approach
 // within `contact_gap` spacings of touching, or are both under pressure: bodies in contact push and
 // shear each other as one body, and part freely once their pressure is released, never pulled
-// together, and no body feels another across a gap); the kernel correction B_i over the active
-// pairs.
+// together, and no body feels another across a gap). A pair of intact and failed material takes part
+// from its failed end only (docs/theory.md §10): the failed particle's velocity gradient counts the
+// intact one and its pressure acts on both, but the intact particle's deformation and stress ignore
+// failed material, as at a free surface (its fractured neighbours' flow does not strain it). The
+// kernel correction B_i over the pairs i takes part in.
 void Integrator::search() {
   if (distribution_) rebuildHalo();
   ScopedPhase phase(timers_, "search");
@@ -211,16 +214,21 @@ void Integrator::search() {
   }
   struck_.assign(n, -1);
   correction_.resize(n);
-  // Which pairs are active: once per pair (the test is symmetric in its ends).
+  // Which ends of a pair take part (Pair::active): once per pair.
   pairs_.build(points.x, h_, points.owned, settings_.mirrors, own,
-               [&](LocalIndex i, LocalIndex j, std::uint8_t m, const Vec3& d) {
+               [&](LocalIndex i, LocalIndex j, std::uint8_t m, const Vec3& d) -> std::uint8_t {
+                 const auto ends = [&]() -> std::uint8_t {
+                   const bool failed_i = points.failed(i), failed_j = points.failed(j);
+                   if (failed_i == failed_j || points.debris(i) || points.debris(j)) return 3;
+                   return failed_i ? 1 : 2;  // failed and intact
+                 };
                  // (Most pairs lie within a body: the other ends' velocity and stress are read only
                  // for the rest.)
-                 if (points.body[i] == points.body[j] && !points.debris(i) && !points.debris(j)) return true;
+                 if (points.body[i] == points.body[j] && !points.debris(i) && !points.debris(j)) return ends();
                  const bool approaching = (points.v[i] - pairs_.mirrors().vector(points.v[j], m)).dot(d) < 0.0;
                  const double touching = (1.0 + contact_gap) * 0.5 * (spacing_[i] + spacing_[j]);
                  const bool pressed = points.stress[i].trace() < 0.0 && points.stress[j].trace() < 0.0;
-                 return (approaching && d.squaredNorm() < touching * touching) || pressed;
+                 return (approaching && d.squaredNorm() < touching * touching) || pressed ? ends() : 0;
                });
   std::int64_t uncorrected = 0;
 #pragma omp parallel for schedule(static) reduction(+ : uncorrected)
@@ -269,6 +277,7 @@ void Integrator::forces() {
   const auto sumTimes = [&](const Mat3& A, const Mat3& B, std::uint8_t m, const Vec3& g) -> Vec3 {
     return lanes::vec3(m == 0 ? lanes::sumTimes(A, B, g) : lanes::sumTimes(A, mirrors.tensor(B, m), g));
   };
+  const Mat3 zero = Mat3::Zero();
   const auto n = static_cast<std::size_t>(points.owned);
   acceleration_.resize(n);
   viscous_power_.resize(n);
@@ -359,7 +368,10 @@ void Integrator::forces() {
         const Vec3 grad = pair.gradient(d);
         Vec3 f = Vec3::Zero();
         if (pair.active) {
-          f.noalias() += a.volume * b.volume * sumTimes(a.stress_b, b.stress_b, m, grad);
+          // (Either end's stress alone over a pair of intact and failed material.)
+          const Mat3& stress_a = pair.active & 1 ? a.stress_b : zero;
+          const Mat3& stress_b = pair.active & 2 ? b.stress_b : zero;
+          f.noalias() += a.volume * b.volume * sumTimes(stress_a, stress_b, m, grad);
           if ((a.tensile || b.tensile) && a.body == b.body && !a.broken && !b.broken) {
             const double h_ij = 0.5 * (a.h + b.h);
             const double reference = CubicSpline::value(0.5 * (a.spacing + b.spacing), h_ij);

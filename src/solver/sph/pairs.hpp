@@ -34,7 +34,10 @@ struct Pair {
   double slope;
   LocalIndex other;     // j
   std::uint8_t mirror;  // the image of j (a code of mirrors(); 0: j itself)
-  std::uint8_t active;  // takes part in the deformation and the stress (Integrator)
+  // Which ends take part in the deformation and the stress (Integrator): bit 1 the listing particle i
+  // (j counts in its kernel correction and velocity gradient, and i's stress acts over the pair), bit 2
+  // the other end j; 0 neither.
+  std::uint8_t active;
 
   Vec3 gradient(const Vec3& d) const { return slope * d; }
 };
@@ -52,10 +55,11 @@ struct Pairs {
   std::vector<std::uint8_t> listed_mirror;  // the image of the listing particle as j meets it
 
   // The pairs of the first `count` positions with smoothing lengths h, and their images across the
-  // mirror planes of `box`, each with its kernel gradient and its activity takes_part(i, j, mirror, d)
-  // (d = x_i - T x_j), formed as the cell list finds it: one pass. With `share` (a distributed run's
-  // own particles and ghosts, in id order), the cells are the whole run's, and pairs of two ghosts are
-  // left out (no own particle reads them: a ghost's sums are its owner's). Collective then.
+  // mirror planes of `box`, each with its kernel gradient and which of its ends take part,
+  // takes_part(i, j, mirror, d) (d = x_i - T x_j; Pair::active's bits), formed as the cell list finds
+  // it: one pass. With `share` (a distributed run's own particles and ghosts, in id order), the cells
+  // are the whole run's, and pairs of two ghosts are left out (no own particle reads them: a ghost's
+  // sums are its owner's). Collective then.
   template <class TakesPart>
   void build(std::span<const Vec3> x, std::span<const double> h, LocalIndex count, const MirrorBox& box,
              const Share& share, TakesPart&& takes_part);
@@ -67,8 +71,8 @@ struct Pairs {
 
   // f(j, mirror, d, g, active) for each pair of particle i, at the positions x of the search: the
   // other particle j (whose image across `mirror` i meets), i's separation from that image
-  // d = x_i - T x_j and i's kernel gradient g, both in lanes (core/lanes.hpp), and whether the pair
-  // is active; those i lists, then those that list i.
+  // d = x_i - T x_j and i's kernel gradient g, both in lanes (core/lanes.hpp), and whether i takes
+  // part in the pair (Pair::active); those i lists, then those that list i.
   template <class F>
   void forEachOf(LocalIndex i, std::span<const Vec3> x, F&& f) const {
     const lanes::V xi = lanes::load(x[i]);
@@ -85,7 +89,7 @@ struct Pairs {
         d = lanes::load(dm);
         g = lanes::load(p.gradient(dm));
       }
-      f(p.other, p.mirror, d, g, p.active != 0);
+      f(p.other, p.mirror, d, g, (p.active & 1) != 0);
     }
     for (Index k = listed_offset[i]; k < listed_offset[i + 1]; ++k) {
       const Pair& p = pair[listed_by[k]];
@@ -100,7 +104,7 @@ struct Pairs {
         d = lanes::load(Vec3(x[i] - mirrors_.point(x[j], m)));
         g = lanes::load(Vec3(-mirrors_.vector(p.gradient(x[j] - mirrors_.point(x[i], p.mirror)), m)));
       }
-      f(j, m, d, g, p.active != 0);
+      f(j, m, d, g, (p.active & 2) != 0);
     }
   }
 

@@ -75,7 +75,8 @@ geometry::Discretisation jitteredBlock() {
 
 // Each pair is listed once and seen from both ends: every particle's pairs (those it lists and
 // those that list it) are those a search of all pairs finds, the images across two symmetry planes
-// included, each with the kernel gradient at its own end, for any number of threads.
+// included, each with the kernel gradient at its own end and whether that end takes part, for any
+// number of threads.
 TEST(SphPairs, EachParticleSeesItsPairsFromBothEnds) {
   const geometry::Discretisation block = jitteredBlock();
   const std::vector<Vec3>& x = block.points;
@@ -103,11 +104,15 @@ TEST(SphPairs, EachParticleSeesItsPairsFromBothEnds) {
   for (const int threads : {1, 2, 3}) {
     omp_set_num_threads(threads);
     Pairs pairs;
-    pairs.build(x, h, n, axes, {}, [](LocalIndex, LocalIndex, std::uint8_t, const Vec3&) { return true; });
+    pairs.build(x, h, n, axes, {}, [](LocalIndex i, LocalIndex j, std::uint8_t, const Vec3&) -> std::uint8_t {
+      return (i + j) % 2 == 0 ? 3 : i % 2 == 0 ? 1 : 2;  // which ends take part, Pair::active's bits
+    });
     Index seen = 0;
     for (LocalIndex i = 0; i < n; ++i) {
       Seen found;
-      pairs.forEachOf(i, x, [&](LocalIndex j, std::uint8_t m, lanes::V d, lanes::V g, bool) {
+      pairs.forEachOf(i, x, [&](LocalIndex j, std::uint8_t m, lanes::V d, lanes::V g, bool active) {
+        // (i takes part where both ends are even or both odd, or where i alone is even.)
+        EXPECT_EQ(active, (i + j) % 2 == 0 || i % 2 == 0) << "particle " << i << ", pair with " << j;
         // (Across planes through the origin an image is its reflection alone.)
         const std::array<Vec3, 2> seen_here{lanes::vec3(d), lanes::vec3(g)};
         EXPECT_TRUE(found.emplace(std::pair<LocalIndex, int>{j, pairs.mirrors().flips(m)}, seen_here).second)
@@ -161,6 +166,43 @@ TEST(Sph, PatchTestLinearVelocityGivesItsGradient) {
   }
   EXPECT_LT(worst, 1e-9);
   EXPECT_TRUE(method->notes().empty());  // every particle was corrected
+}
+
+// Intact material beside failed material deforms as at a free surface: its velocity gradient ignores
+// its failed neighbours' motion (docs/theory.md §10). A block moves in a linear field but for two
+// failed layers, which move at random: every intact particle's first step still gives the field's
+// gradient, and some failed particle's does not (their gradients count the intact particles).
+TEST(Sph, IntactMatterIgnoresFailedNeighboursInItsDeformation) {
+  Mat3 G;
+  G << 100.0, -30.0, 20.0, 50.0, -80.0, 10.0, -40.0, 60.0, 30.0;
+  Problem problem = quiet(1e-3);
+  BodySetup body;
+  body.name = "block";
+  body.material = testing::aluminium();
+  body.mesh = jitteredBlock();
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> speed(-50.0, 50.0);
+  body.velocity_field = [&](const Vec3& x) {
+    return x[0] < 2e-3 ? Vec3(speed(random), speed(random), speed(random)) : Vec3(G * x + Vec3(1.0, 2.0, 3.0));
+  };
+  problem.bodies = {body};
+  Model model = buildModel(problem);
+  for (LocalIndex p = 0; p < model.points.size(); ++p)
+    if (model.points.x[p][0] < 2e-3) model.points.fail(p);
+  SphMethod method(std::move(model), problem);
+  method.initialise();
+  method.step();
+  const double dt = method.clock().dt_last;
+  const PointStore& points = method.state().points;
+  double worst_intact = 0.0, worst_failed = 0.0;
+  for (LocalIndex p = 0; p < points.owned; ++p) {
+    const Mat3& dF = points.dF[p];
+    const Mat3 L = 2.0 / dt * (dF - Mat3::Identity()) * (dF + Mat3::Identity()).inverse();
+    double& worst = points.broken[p] ? worst_failed : worst_intact;
+    worst = std::max(worst, (L - G).norm() / G.norm());
+  }
+  EXPECT_LT(worst_intact, 1e-9);
+  EXPECT_GT(worst_failed, 0.1);
 }
 
 // Two blocks collide and rebound: the pairwise forces are antisymmetric, so linear momentum
