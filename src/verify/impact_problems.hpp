@@ -62,7 +62,8 @@ struct Hugoniot3dResult {
 
 struct Shell {
   double radius, density, radial_velocity, energy;  // mass-weighted over the shell
-  double packed_density;  // the shell's mass over the space it spans (the octant's shell)
+  // The shell's mass over the space it spans (the octant's shell).
+  double packed_density;
 };
 
 struct NohResult {
