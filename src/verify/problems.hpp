@@ -8,6 +8,7 @@ namespace kessler::verify {
 
 Outcome lmeConsistency();
 Outcome waveSpeed();
+Outcome plateWave();
 Outcome momentum();
 Outcome contactGap();
 Outcome energy();

@@ -10,6 +10,7 @@ const std::vector<Check>& problems() {
   static const std::vector<Check> all{
       {"lme-consistency", "LME identities on a distorted point cloud", lmeConsistency},
       {"wave-speed", "longitudinal wave speed in a bar under uniaxial strain", waveSpeed},
+      {"plate-wave", "extensional wave in a plate with free faces", plateWave},
       {"momentum", "linear momentum conserved through a collision of two bodies", momentum},
       {"contact-gap", "bodies separated by a gap do not interact until they touch", contactGap},
       {"energy", "energy drift of a freely vibrating elastic bar over 5 periods", energy},
