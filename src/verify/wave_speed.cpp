@@ -10,9 +10,9 @@
 // plate speed c_p = sqrt(E / (rho (1 - nu^2))) and carries the axial stress -rho c_p v0 (Graff,
 // Wave Motion in Elastic Solids, 1975, on plates). A step is not a long wave: the plate's dispersion
 // spreads the front, whose half-height point lags the long-wave speed by about 1% here
-// (docs/validation.md, "A plate's extensional wave"). Both the
-// speed and the stress behind the front are judged: a method whose free faces were too stiff or too
-// soft would carry the wave at the bar's or the bulk's speed and impedance instead.
+// (docs/validation.md, "A plate's extensional wave"). Both the speed and the stress behind the front
+// are judged: a method whose free faces were too stiff or too soft would carry the wave at the
+// bulk's or the bar's speed and impedance instead.
 #include "solver/methods.hpp"
 #include "verify/fixtures.hpp"
 #include "verify/problems.hpp"
@@ -47,7 +47,8 @@ double frontPosition(const PointStore& points, double h, int slabs, double v0) {
 struct Front {
   double speed = 0.0;     // between a quarter and three quarters of the bar's length
   double position = 0.0;  // at the end
-  double stress = 0.0;    // the volume-mean axial stress from 10 cells to 15 cells behind the front, at the end
+  double stress =
+      0.0;  // the volume-mean axial stress from 10 cells past the piston to 15 short of the front, at the end
   Index steps = 0;
 };
 
@@ -91,20 +92,26 @@ Front pushBox(int across, int thick, bool rollers_y, double speed) {
   return f;
 }
 
+// The front's speed against `reference`, within 2%.
+Outcome speedOutcome(const char* name, const char* quantity, const Front& f, double reference) {
+  Outcome o;
+  o.name = name;
+  o.quantity = quantity;
+  o.measured = f.speed;
+  o.reference = reference;
+  o.tolerance = 0.02;
+  return compare(o);
+}
+
 }  // namespace
 
 Outcome waveSpeed() {
   const NeoHookeanParameters& p = aluminium;
   const double c_l = std::sqrt((p.bulkModulus() + 4.0 * p.shearModulus() / 3.0) / p.density);
   const Front f = pushBox(2, 2, true, c_l);
-  Outcome o;
-  o.name = "wave-speed";
-  o.quantity = "longitudinal wave speed (m/s)";
-  o.measured = f.speed;
-  o.reference = c_l;
-  o.tolerance = 0.02;
+  Outcome o = speedOutcome("wave-speed", "longitudinal wave speed (m/s)", f, c_l);
   o.note = fmt::format("bar 2x2x{} cells of {} mm, piston {} m/s, {} steps", cells, cell * 1e3, piston_speed, f.steps);
-  return compare(o);
+  return o;
 }
 
 Outcome plateWave() {
@@ -113,13 +120,7 @@ Outcome plateWave() {
   const double c_p = std::sqrt(p.youngs_modulus / (p.density * (1.0 - nu * nu)));
   const double stress = -p.density * c_p * piston_speed;
   const Front f = pushBox(2, 4, false, c_p);
-  Outcome o;
-  o.name = "plate-wave";
-  o.quantity = "plate wave speed (m/s)";
-  o.measured = f.speed;
-  o.reference = c_p;
-  o.tolerance = 0.02;
-  o = compare(o);
+  Outcome o = speedOutcome("plate-wave", "plate wave speed (m/s)", f, c_p);
   const double stress_error = std::abs(f.stress / stress - 1.0);
   o.passed = o.passed && stress_error <= o.tolerance;
   o.note = fmt::format(
