@@ -8,9 +8,12 @@
 
 namespace kessler::verify {
 
+NeoHookeanParameters elasticAluminiumParameters() {
+  return {.density = 2700.0, .youngs_modulus = 70e9, .poisson_ratio = 0.33};
+}
+
 std::shared_ptr<const NeoHookean> elasticAluminium() {
-  return std::make_shared<NeoHookean>(
-      "aluminium (elastic)", NeoHookeanParameters{.density = 2700.0, .youngs_modulus = 70e9, .poisson_ratio = 0.33});
+  return std::make_shared<NeoHookean>("aluminium (elastic)", elasticAluminiumParameters());
 }
 
 BodySetup boxBody(const std::string& name, const geometry::Box& box, const std::array<int, 3>& cells,

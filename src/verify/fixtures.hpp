@@ -10,8 +10,9 @@
 
 namespace kessler::verify {
 
-// An aluminium-like neo-Hookean solid: rho 2700 kg/m^3, E 70 GPa, nu 0.33.
+// An aluminium-like neo-Hookean solid: rho 2700 kg/m^3, E 70 GPa, nu 0.33; and its parameters.
 std::shared_ptr<const NeoHookean> elasticAluminium();
+NeoHookeanParameters elasticAluminiumParameters();
 
 // A box body of n x m x k cells (geometry::StructuredBox: OTM's Kuhn tets, SPH's lattice).
 BodySetup boxBody(const std::string& name, const geometry::Box& box, const std::array<int, 3>& cells,

@@ -23,8 +23,6 @@ namespace kessler::verify {
 
 namespace {
 
-// elasticAluminium()'s parameters.
-const NeoHookeanParameters aluminium{.density = 2700.0, .youngs_modulus = 70e9, .poisson_ratio = 0.33};
 constexpr double cell = 1e-3, piston_speed = 1.0;
 constexpr int cells = 100;
 
@@ -47,8 +45,8 @@ double frontPosition(const PointStore& points, double h, int slabs, double v0) {
 struct Front {
   double speed = 0.0;     // between a quarter and three quarters of the bar's length
   double position = 0.0;  // at the end
-  double stress =
-      0.0;  // the volume-mean axial stress from 10 cells past the piston to 15 short of the front, at the end
+  // The volume-mean axial stress at the end, from 10 cells past the piston to 15 short of the front.
+  double stress = 0.0;
   Index steps = 0;
 };
 
@@ -106,7 +104,7 @@ Outcome speedOutcome(const char* name, const char* quantity, const Front& f, dou
 }  // namespace
 
 Outcome waveSpeed() {
-  const NeoHookeanParameters& p = aluminium;
+  const NeoHookeanParameters p = elasticAluminiumParameters();
   const double c_l = std::sqrt((p.bulkModulus() + 4.0 * p.shearModulus() / 3.0) / p.density);
   const Front f = pushBox(2, 2, true, c_l);
   Outcome o = speedOutcome("wave-speed", "longitudinal wave speed (m/s)", f, c_l);
@@ -115,7 +113,7 @@ Outcome waveSpeed() {
 }
 
 Outcome plateWave() {
-  const NeoHookeanParameters& p = aluminium;
+  const NeoHookeanParameters p = elasticAluminiumParameters();
   const double nu = p.poisson_ratio;
   const double c_p = std::sqrt(p.youngs_modulus / (p.density * (1.0 - nu * nu)));
   const double stress = -p.density * c_p * piston_speed;
