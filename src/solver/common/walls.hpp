@@ -18,15 +18,17 @@ struct RigidWall {
 };
 
 // The velocity v a carrier at x takes for a step dt: the prescribed components (bit i of
-// `constrained` set: component i is prescribed[i]), then no wall crossed (the normal velocity that
-// would carry it through a wall is cut to reach the wall at the end of the step).
+// `constrained` set: component i is prescribed[i]), then no wall crossed by its matter, which
+// reaches `reach` beyond it towards the wall (0 for OTM's nodes, which lie on the body's surface;
+// half a spacing for a particle, whose cell it is the centre of): the normal velocity that would
+// carry that matter through a wall is cut to bring it to the wall at the end of the step.
 inline void imposeBoundaries(std::uint8_t constrained, const Vec3& prescribed, std::span<const RigidWall> walls,
-                             const Vec3& x, double dt, Vec3& v) {
+                             const Vec3& x, double dt, Vec3& v, double reach = 0.0) {
   for (int i = 0; i < 3; ++i)
     if (constrained & (1u << i)) v[i] = prescribed[i];
   for (const RigidWall& wall : walls) {
     const double gap = x[wall.axis] - wall.position;
-    if (wall.side * (gap + dt * v[wall.axis]) < 0.0) v[wall.axis] = -gap / dt;
+    if (wall.side * (gap + dt * v[wall.axis]) < reach) v[wall.axis] = (wall.side * reach - gap) / dt;
   }
 }
 

@@ -31,6 +31,25 @@ TEST(Boundaries, PrescribedComponentsThenNoWallCrossed) {
   EXPECT_EQ(short_of, Vec3(0, 0, -1.0));
 }
 
+TEST(Boundaries, AParticlesCellStopsAtTheWall) {
+  // A particle's matter reaches `reach` beyond its centre: its centre stops that far from the wall.
+  const std::vector<RigidWall> below{{2, 0.0, 1}}, above{{2, 1.0, -1}};  // z >= 0; z <= 1
+  Vec3 down(0, 0, -5.0);
+  imposeBoundaries(0, Vec3::Zero(), below, Vec3(0, 0, 0.3), 0.1, down, 0.1);
+  EXPECT_DOUBLE_EQ(0.3 + 0.1 * down[2], 0.1);  // it ends the step 0.1 above the wall
+  Vec3 up(0, 0, 5.0);
+  imposeBoundaries(0, Vec3::Zero(), above, Vec3(0, 0, 0.7), 0.1, up, 0.1);
+  EXPECT_DOUBLE_EQ(0.7 + 0.1 * up[2], 0.9);  // and 0.1 below this one
+  // Farther than its reach after the step: untouched (with no reach it would be too).
+  Vec3 slow(0, 0, -1.0);
+  imposeBoundaries(0, Vec3::Zero(), below, Vec3(0, 0, 0.3), 0.1, slow, 0.1);
+  EXPECT_EQ(slow, Vec3(0, 0, -1.0));
+  // Already within its reach, at rest: pushed back out to it within the step.
+  Vec3 rest = Vec3::Zero();
+  imposeBoundaries(0, Vec3::Zero(), below, Vec3(0, 0, 0.05), 0.1, rest, 0.1);
+  EXPECT_DOUBLE_EQ(rest[2], 0.5);
+}
+
 PointStore threePoints() {
   PointStore points;
   points.resize(3);
