@@ -17,6 +17,10 @@ struct RigidWall {
   int side = 1;
 };
 
+// How far a particle's matter reaches beyond its centre, in its reference spacings: half, to the faces
+// of its cell. A particle method's walls and contact keep that reach from them (SPH's and RKPM's).
+constexpr double particle_reach = 0.5;
+
 // The velocity v a carrier at x takes for a step dt: the prescribed components (bit i of
 // `constrained` set: component i is prescribed[i]), then no wall crossed by its matter, which
 // reaches `reach` beyond it towards the wall (0 for OTM's nodes, which lie on the body's surface;

@@ -125,7 +125,7 @@ void Integrator::prepare() {
   particle_du_.assign(n, Vec3::Zero());
   moved_mark_.assign(n, 0);
   gap_.resize(n);
-  for (std::size_t p = 0; p < n; ++p) gap_[p] = 0.5 * points.spacing0[p];
+  for (std::size_t p = 0; p < n; ++p) gap_[p] = particle_reach * points.spacing0[p];
   // Bodies meet where they have surfaces (several lattice bodies); the surfaces follow the debris
   // where the particles' lattice elements are known (a checkpoint older than them keeps its own).
   sliding_ = !model_.surface.empty();

@@ -141,9 +141,9 @@ void Integrator::step() {
 #pragma omp parallel for schedule(static)
       for (LocalIndex p = 0; p < points.owned; ++p) {
         points.v[p] += dt_kick * acceleration_[p];
-        // (A wall meets the particle's cell, half its reference spacing beyond it, as RKPM's: docs/theory.md §10.)
+        // (A wall meets the particle's cell, as RKPM's: docs/theory.md §10.)
         imposeBoundaries(model_.constrained[p], model_.prescribed_v[p], settings_.walls, points.x[p], dt, points.v[p],
-                         0.5 * points.spacing0[p]);
+                         particle_reach * points.spacing0[p]);
       }
       deform(dt);
     }
