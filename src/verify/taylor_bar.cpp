@@ -48,18 +48,21 @@ TaylorBarResult runTaylorBar(double mesh_size, double cfl, bool volume_averaging
 
   TaylorBarResult r;
   const PointStore& points = method->state().points;
+  // The footprint: the outermost surface within a quarter element of the wall. The surface is the
+  // nodes (OTM) or the particles' cells, half a spacing about their centres (SPH, RKPM: node_cloud.hpp).
+  const double touching = 0.25 * mesh_size;
   if (surfaceOnNodes(nodes))
     for (LocalIndex a = 0; a < nodes.owned; ++a) {
       const Vec3& x = nodes.x[a];
       r.length = std::max(r.length, x[2]);
-      if (x[2] < 0.25 * mesh_size) r.footprint_radius = std::max(r.footprint_radius, std::hypot(x[0], x[1]));
+      if (x[2] < touching) r.footprint_radius = std::max(r.footprint_radius, std::hypot(x[0], x[1]));
     }
-  else  // the particles' cells (SPH, RKPM), half a spacing beyond their centres
+  else
     for (LocalIndex q = 0; q < points.owned; ++q) {
       const Vec3& x = points.x[q];
       const double half = 0.5 * points.spacing(q);
       r.length = std::max(r.length, x[2] + half);
-      if (x[2] < 2.0 * half) r.footprint_radius = std::max(r.footprint_radius, std::hypot(x[0], x[1]) + half);
+      if (x[2] - half < touching) r.footprint_radius = std::max(r.footprint_radius, std::hypot(x[0], x[1]) + half);
     }
   const Clock clock = method->clock();
   r.steps = clock.steps;

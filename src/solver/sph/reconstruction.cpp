@@ -145,7 +145,8 @@ std::vector<double> Reconstruction::latticeReach(const Model& model, const Share
 }
 
 NodeCloud Reconstruction::cloud() const {
-  return {id_, body_, x_, v_, mass_, static_cast<LocalIndex>(x_.size())};
+  // Not the bodies' surfaces: SPH's walls and contact act on the particles' cells (node_cloud.hpp).
+  return {id_, body_, x_, v_, mass_, static_cast<LocalIndex>(x_.size()), false};
 }
 
 }  // namespace kessler::sph
