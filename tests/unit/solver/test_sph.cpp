@@ -359,6 +359,17 @@ TEST(SphReconstruction, AffineMotionIsReconstructedExactly) {
   for (LocalIndex p = 0; p < model.points.size(); ++p) EXPECT_GT(r.quality(p), 0.8);
 }
 
+// The reconstructed nodes are drawn and linked, but they are not the surface SPH's walls and contact
+// act on: the verifications that measure a body's surface (the Taylor bar's footprint, the contact
+// gap) read the particles' cells instead (solver/common/node_cloud.hpp).
+TEST(SphReconstruction, ItsNodesAreNotTheBodiesSurface) {
+  const Model model = latticeBlock();
+  const Reconstruction r(model);
+  const NodeCloud nodes = r.cloud();
+  EXPECT_EQ(nodes.owned, 64);
+  EXPECT_FALSE(surfaceOnNodes(nodes));
+}
+
 // A block sheared by gamma = 6 (corner angle atan(1/6), 9.5 degrees, below 11.5): every element fails,
 // its particle loose (in no fragment) with its material intact and its stress kept; a second pass
 // finds nothing more to fail.
