@@ -193,14 +193,14 @@ double Integrator::meanNeighbours() const {
 }
 
 // The pairs at the current positions; which take part in the deformation, the stress and the
-// viscosity (those within a body always; across bodies, or with debris, while the two approach
-// within `contact_gap` spacings of touching, or are both under pressure: bodies in contact push and
-// shear each other as one body, and part freely once their pressure is released, never pulled
-// together, and no body feels another across a gap). A pair of intact and failed material takes part
-// from its failed end only (docs/theory.md §10): the failed particle's velocity gradient counts the
-// intact one and its pressure acts on both, but the intact particle's deformation and stress ignore
-// failed material, as at a free surface (its fractured neighbours' flow does not strain it). The
-// kernel correction B_i over the pairs i takes part in.
+// viscosity (those within a body always; across bodies, or with debris, while the two lie within
+// `contact_gap` spacings of touching and either approach or are both under pressure: bodies in
+// contact push and shear each other as one body, and part freely once their pressure is released,
+// never pulled together, and no body feels another across a gap, pressed or not). A pair of intact
+// and failed material takes part from its failed end only (docs/theory.md §10): the failed
+// particle's velocity gradient counts the intact one and its pressure acts on both, but the intact
+// particle's deformation and stress ignore failed material, as at a free surface (its fractured
+// neighbours' flow does not strain it). The kernel correction B_i over the pairs i takes part in.
 void Integrator::search() {
   if (distribution_) rebuildHalo();
   ScopedPhase phase(timers_, "search");
@@ -227,10 +227,11 @@ void Integrator::search() {
                  // (Most pairs lie within a body: the other ends' velocity and stress are read only
                  // for the rest.)
                  if (points.body[i] == points.body[j] && !points.debris(i) && !points.debris(j)) return ends();
-                 const bool approaching = (points.v[i] - pairs_.mirrors().vector(points.v[j], m)).dot(d) < 0.0;
                  const double touching = (1.0 + contact_gap) * 0.5 * (spacing_[i] + spacing_[j]);
+                 if (d.squaredNorm() >= touching * touching) return 0;
+                 const bool approaching = (points.v[i] - pairs_.mirrors().vector(points.v[j], m)).dot(d) < 0.0;
                  const bool pressed = points.stress[i].trace() < 0.0 && points.stress[j].trace() < 0.0;
-                 return (approaching && d.squaredNorm() < touching * touching) || pressed ? ends() : 0;
+                 return approaching || pressed ? ends() : 0;
                });
   std::int64_t uncorrected = 0;
 #pragma omp parallel for schedule(static) reduction(+ : uncorrected)

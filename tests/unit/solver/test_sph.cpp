@@ -1,5 +1,5 @@
 // SPH (solver/sph/, docs/theory.md §10): its kernel, its pairs, the corrected gradient's patch test, linear
-// momentum through a collision, and a longitudinal wave's speed.
+// momentum through a collision, contact across a gap, and a longitudinal wave's speed.
 #include "../blocks.hpp"
 #include "core/error.hpp"
 #include "solver/methods.hpp"
@@ -246,6 +246,52 @@ TEST(Sph, CollisionConservesLinearMomentum) {
   EXPECT_LT((after - before).norm(), 1e-12 * before.norm()) << "steps " << method->clock().steps;
   // The target was struck: it moves.
   EXPECT_GT(method->state().points.v.back().norm(), 1.0);
+}
+
+// Bodies feel each other only within half a spacing of touching, pressed or not (docs/theory.md §10,
+// "Contact between bodies"). Two blocks, each squeezed towards its own centre so that both come
+// under pressure, lie a spacing apart (between their cells' faces: their facing particles two spacings
+// apart, within the kernel's reach of 2.4): the first moves as it does with the second far away. Laid
+// face to face, they interact.
+TEST(Sph, PressedBodiesDoNotFeelEachOtherAcrossAGap) {
+  const double s = 0.5e-3, side = 2e-3;
+  // The first block's particle velocities after five steps, the second block `gap` from it.
+  const auto firstBlock = [&](double gap) {
+    Problem problem;
+    problem.method = "sph";
+    problem.settings.solver.end_time = 1.0;
+    for (int b = 0; b < 2; ++b) {
+      BodySetup body;
+      body.name = b == 0 ? "first" : "second";
+      body.material = testing::aluminium();
+      const Vec3 lo(b == 0 ? 0.0 : side + gap, 0.0, 0.0), hi = lo + Vec3::Constant(side);
+      body.mesh = geometry::MeshRequest{geometry::Box{lo, hi}, s};
+      const Vec3 centre = 0.5 * (lo + hi);
+      body.velocity_field = [centre](const Vec3& x) { return Vec3(-1e3 * (x - centre)); };
+      problem.bodies.push_back(body);
+    }
+    const std::unique_ptr<Method> method = makeMethod(problem);
+    method->initialise();
+    for (int k = 0; k < 5; ++k) method->step();
+    const PointStore& points = method->state().points;
+    std::vector<Vec3> v;
+    for (LocalIndex p = 0; p < points.owned; ++p) {
+      if (points.body[p] != 0) continue;
+      EXPECT_LT(points.stress[p].trace(), 0.0) << "particle " << points.id[p] << " is not pressed";
+      v.push_back(points.v[p]);
+    }
+    return v;
+  };
+  const auto largestDifference = [](const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
+    double worst = 0.0;
+    for (std::size_t p = 0; p < a.size(); ++p) worst = std::max(worst, (a[p] - b[p]).norm());
+    return worst;
+  };
+  const std::vector<Vec3> alone = firstBlock(100 * side);
+  ASSERT_FALSE(alone.empty());
+  // (The blocks' speeds are about 1 m/s; the runs' time steps may differ by a rounding.)
+  EXPECT_LT(largestDifference(firstBlock(s), alone), 1e-9);
+  EXPECT_GT(largestDifference(firstBlock(0.0), alone), 1e-4);
 }
 
 // A longitudinal wave in a bar under uniaxial strain (the verification wave-speed, with SPH's
