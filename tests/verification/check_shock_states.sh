@@ -4,8 +4,8 @@
 # to 0.2 us (the instant), its fields written every 0.05 us on the way. At every output, not
 # only the last, fewer than 1% of the shocked material points (rho > 1.2 rho0) may lie above
 # 1.1 rho_H = 1.625 rho0, rho_H = 1.477 rho0 being the Hugoniot's density for a symmetric impact at
-# this speed (u_p = 3.09 km/s, P_H = 79.9 GPa; the hugoniot-3d verification). With `peak`, the largest pressure at 0.2 us may not exceed 100 GPa
-# either.
+# this speed (u_p = 3.09 km/s, P_H = 79.9 GPa; the hugoniot-3d verification). With `peak`, the
+# largest pressure at 0.2 us may not exceed 100 GPa either.
 # Usage: check_shock_states.sh KESSLER PYTHON DECK OUT METHOD MESH [peak]
 set -euo pipefail
 kessler=$1 python=$2 deck=$3 out=$4 method=$5 mesh=$6 peak=${7:-}
