@@ -7,6 +7,7 @@
 // support (about 2.8 h at gamma 1.8) would couple them at a gap of about 2.5 h.
 // Measured: the gap at the first step that moves the block, over contact_distance * h_max;
 // it must lie in [0, 1] (reference 0.5, absolute tolerance 0.5).
+#include "solver/common/walls.hpp"
 #include "solver/methods.hpp"
 #include "verify/fixtures.hpp"
 #include "verify/problems.hpp"
@@ -44,8 +45,8 @@ Outcome contactGap() {
     }
     if (!surfaceOnNodes(nodes))
       for (LocalIndex p = 0; p < points.owned; ++p) {
-        if (points.body[p] == a) front = std::max(front, points.x[p][0] + 0.5 * points.spacing(p));
-        if (points.body[p] == b) back = std::min(back, points.x[p][0] - 0.5 * points.spacing(p));
+        if (points.body[p] == a) front = std::max(front, points.x[p][0] + particle_reach * points.spacing(p));
+        if (points.body[p] == b) back = std::min(back, points.x[p][0] - particle_reach * points.spacing(p));
       }
     return back - front;
   };

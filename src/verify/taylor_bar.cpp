@@ -6,6 +6,7 @@
 // (polynomial EOS with K1 = K, Gamma0 = 0), as the benchmark is elastic-plastic without an EOS.
 #include "material/impact_material.hpp"
 #include "solver/common/stable_step.hpp"
+#include "solver/common/walls.hpp"
 #include "verify/fixtures.hpp"
 #include "verify/impact_problems.hpp"
 
@@ -60,7 +61,7 @@ TaylorBarResult runTaylorBar(double mesh_size, double cfl, bool volume_averaging
   else
     for (LocalIndex q = 0; q < points.owned; ++q) {
       const Vec3& x = points.x[q];
-      const double half = 0.5 * points.spacing(q);
+      const double half = particle_reach * points.spacing(q);
       r.length = std::max(r.length, x[2] + half);
       if (x[2] - half < touching) r.footprint_radius = std::max(r.footprint_radius, std::hypot(x[0], x[1]) + half);
     }
