@@ -10,6 +10,7 @@
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -23,6 +24,14 @@ namespace {
 // (each reaching half a spacing from its particle) closes to half a spacing, as OTM's seizing
 // contact at its default contact_distance (docs/theory.md §10).
 constexpr double contact_gap = 0.5;
+
+// Pair::active's bit, during the search, of a pair across bodies that lies beyond touching but
+// within the kernel: it takes part only if one of its ends touches the other's body.
+constexpr std::uint8_t through_contact = 4;
+
+std::uint32_t bodyBit(int body) {
+  return std::uint32_t{1} << (static_cast<unsigned>(body) % 32u);
+}
 
 // A particle's work in a step, in pairs: its pairs' kernel, force and deformation terms go by the
 // pair, its material update, erosion and time step by the particle (about as much as 9 pairs).
@@ -196,11 +205,15 @@ double Integrator::meanNeighbours() const {
 // viscosity (those within a body always; across bodies, or with debris, while the two lie within
 // `contact_gap` spacings of touching and either approach or are both under pressure: bodies in
 // contact push and shear each other as one body, and part freely once their pressure is released,
-// never pulled together, and no body feels another across a gap, pressed or not). A pair of intact
-// and failed material takes part from its failed end only (docs/theory.md §10): the failed
-// particle's velocity gradient counts the intact one and its pressure acts on both, but the intact
-// particle's deformation and stress ignore failed material, as at a free surface (its fractured
-// neighbours' flow does not strain it). The kernel correction B_i over the pairs i takes part in.
+// never pulled together, and no body feels another across a gap, pressed or not). Once a particle
+// touches another body so, its other pairs with that body within the kernel take part too (while
+// they approach or are pressed), as within one body: a contact's particles see the other body as far
+// as they see their own, and their own pressure does not push them into it, as it pushes a free
+// surface's particles outwards. A pair of intact and failed material takes part from its failed
+// end only (docs/theory.md §10): the failed particle's velocity gradient counts the intact one and
+// its pressure acts on both, but the intact particle's deformation and stress ignore failed
+// material, as at a free surface (its fractured neighbours' flow does not strain it). The kernel
+// correction B_i over the pairs i takes part in.
 void Integrator::search() {
   if (distribution_) rebuildHalo();
   ScopedPhase phase(timers_, "search");
@@ -216,7 +229,10 @@ void Integrator::search() {
   }
   struck_.assign(n, -1);
   correction_.resize(n);
-  // Which ends of a pair take part (Pair::active): once per pair.
+  touches_.assign(n, 0);
+  // Which ends of a pair take part (Pair::active): once per pair, those across bodies beyond touching
+  // marked `through_contact` until every particle's contacts are known (below).
+  std::atomic<bool> through{false};
   pairs_.build(points.x, h_, points.owned, settings_.mirrors, own,
                [&](LocalIndex i, LocalIndex j, std::uint8_t m, const Vec3& d) -> std::uint8_t {
                  const auto ends = [&]() -> std::uint8_t {
@@ -228,11 +244,36 @@ void Integrator::search() {
                  // for the rest.)
                  if (points.body[i] == points.body[j] && !points.debris(i) && !points.debris(j)) return ends();
                  const double touching = (1.0 + contact_gap) * 0.5 * (spacing_[i] + spacing_[j]);
-                 if (d.squaredNorm() >= touching * touching) return 0;
+                 const bool close = d.squaredNorm() < touching * touching;
+                 const bool debris = points.debris(i) || points.debris(j);
+                 if (!close && debris) return 0;
                  const bool approaching = (points.v[i] - pairs_.mirrors().vector(points.v[j], m)).dot(d) < 0.0;
                  const bool pressed = points.stress[i].trace() < 0.0 && points.stress[j].trace() < 0.0;
-                 return approaching || pressed ? ends() : 0;
+                 if (!approaching && !pressed) return 0;
+                 if (!close) {
+                   through.store(true, std::memory_order_relaxed);
+                   return static_cast<std::uint8_t>(ends() | through_contact);
+                 }
+                 if (!debris) {  // i touches j's body and j i's (an OR: the same in any order)
+                   std::atomic_ref(touches_[i]).fetch_or(bodyBit(points.body[j]), std::memory_order_relaxed);
+                   std::atomic_ref(touches_[j]).fetch_or(bodyBit(points.body[i]), std::memory_order_relaxed);
+                 }
+                 return ends();
                });
+  // A pair beyond touching takes part where one end touches the other's body (a ghost's contacts are
+  // its owner's: this rank may not hold the pair that makes one).
+  if (distribution_) distribution_->refresh(touches_);
+  if (own.any(through.load())) {
+#pragma omp parallel for schedule(static)
+    for (LocalIndex i = 0; i < points.owned; ++i)
+      for (Index e = pairs_.offset[i]; e < pairs_.offset[i + 1]; ++e) {
+        Pair& pair = pairs_.pair[e];
+        if (!(pair.active & through_contact)) continue;
+        const LocalIndex j = pair.other;
+        const bool contact = (touches_[i] & bodyBit(points.body[j])) || (touches_[j] & bodyBit(points.body[i]));
+        pair.active = contact ? static_cast<std::uint8_t>(pair.active & ~through_contact) : std::uint8_t{0};
+      }
+  }
   std::int64_t uncorrected = 0;
 #pragma omp parallel for schedule(static) reduction(+ : uncorrected)
   for (LocalIndex i = 0; i < points.owned; ++i) {

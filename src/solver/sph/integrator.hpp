@@ -131,6 +131,8 @@ class Integrator {
   std::vector<PairEnd> ends_;
   std::vector<Mat3> artificial_;  // the artificial stress R of each particle (forces())
   std::vector<int> struck_;       // the body each debris particle met at the last search, -1 none
+  // The bodies each particle touches at the last search (bit b % 32 for body b; search()).
+  std::vector<std::uint32_t> touches_;
   LocalIndex uncorrected_ = 0;
 };
 
