@@ -1,5 +1,6 @@
 // SPH (solver/sph/, docs/theory.md §10): its kernel, its pairs, the corrected gradient's patch test, linear
-// momentum through a collision, contact across a gap, and a longitudinal wave's speed.
+// momentum through a collision, contact across a gap, bodies in contact that do not pass through each
+// other, and a longitudinal wave's speed.
 #include "../blocks.hpp"
 #include "core/error.hpp"
 #include "material/impact_material.hpp"
