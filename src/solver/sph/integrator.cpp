@@ -467,11 +467,26 @@ void Integrator::forces() {
   }
 }
 
+// The corrected gradient of a particle vector field u at particle i over the active pairs (the
+// velocity's or the acceleration's): sum_j V_j (u_j - u_i) (x) grad_i W_ij B_i.
+Mat3 Integrator::gradientOf(LocalIndex i, std::span<const Vec3> u) const {
+  const PointStore& points = model_.points;
+  const Mirrors& mirrors = pairs_.mirrors();
+  lanes::OuterSum gradient;
+  const lanes::V ui = lanes::load(u[i]);
+  pairs_.forEachOf(i, points.x, [&](LocalIndex j, std::uint8_t m, lanes::V, lanes::V grad, bool active) {
+    if (!active) return;
+    // (An image's vector reflected apart: a load of a vector just stored would wait for the stores.)
+    const lanes::V uj = m == 0 ? lanes::load(u[j]) : lanes::load(mirrors.vector(u[j], m));
+    gradient.add(lanes::times(points.volume[j], lanes::minus(uj, ui)), grad);
+  });
+  return gradient.matrix() * correction_[i];
+}
+
 // Step 2: each particle's deformation over the step from the kicked velocities, then the drift
 // (two passes: the first reads the volumes and velocities that the second changes).
 void Integrator::deform(double dt) {
   PointStore& points = model_.points;
-  const Mirrors& mirrors = pairs_.mirrors();
   volume_rate_.resize(static_cast<std::size_t>(points.owned));
   const Share own = share();
   LocalIndex bad = points.owned;
@@ -480,16 +495,8 @@ void Integrator::deform(double dt) {
     if (!own.own(i)) continue;  // a ghost's deformation is its owner's (refreshed below)
     points.dF[i].setIdentity();
     if (points.debris(i)) continue;
-    lanes::OuterSum gradient;
-    const lanes::V vi = lanes::load(points.v[i]);
-    pairs_.forEachOf(i, points.x, [&](LocalIndex j, std::uint8_t m, lanes::V, lanes::V grad, bool active) {
-      if (!active) return;
-      // (An image's velocity reflected apart: a load of a vector just stored would wait for the stores.)
-      const lanes::V vj = m == 0 ? lanes::load(points.v[j]) : lanes::load(mirrors.vector(points.v[j], m));
-      gradient.add(lanes::times(points.volume[j], lanes::minus(vj, vi)), grad);
-    });
-    const Mat3 L = gradient.matrix() * correction_[i];
-    switchViscosity(i, L.trace(), dt);
+    const Mat3 L = gradientOf(i, points.v);
+    switchViscosity(i, L, dt);
     const Mat3 half = 0.5 * dt * L;
     const Mat3 dF = (Mat3::Identity() - half).inverse() * (Mat3::Identity() + half);
     const double J = dF.determinant();
@@ -523,16 +530,38 @@ void Integrator::deform(double dt) {
   if (distribution_) distribution_->refresh(model_);
 }
 
-// Morris & Monaghan's switch (J. Comput. Phys. 136:41, 1997): d alpha/dt = -(alpha - alpha_min) / tau
-// + max(-div v, 0) (alpha_max - alpha), tau = h / (decay c), integrated implicitly over the step (so
-// alpha stays within [alpha_min, alpha_max] for any step).
-void Integrator::switchViscosity(LocalIndex p, double div_v, double dt) {
+// The viscosity switch (docs/theory.md §10), after Cullen & Dehnen (MNRAS 408:669, 2010, §2.3): alpha
+// rises at once to its local target as a shock arrives, and decays towards it (at least alpha_min) at
+// the rate decay c / h, implicitly. The target is alpha_max A / (A + c^2 + H^2 tr(L L)+), H = 2h the
+// kernel's reach and A = xi H^2 max(-div a, 0), where the flow compresses: the rate at which the
+// forces raise the compression. Its kinematic part -tr(L L), which steepens a smooth convergent flow
+// no force acts on (Noh's cold inflow), is left out of A and weighs against it. xi = div^2 / (div^2 +
+// |curl v|^2) keeps it off where the flow turns more than it compresses (Balsara, J. Comput. Phys.
+// 121:357, 1995). A particle that touches another body takes alpha_max: the velocity jumps across a
+// contact, before any force has acted.
+void Integrator::switchViscosity(LocalIndex i, const Mat3& L, double dt) {
   const SphOptions& o = settings_.sph;
-  const PointStore& points = model_.points;
-  const double decay = o.viscosity_decay * points.sound_speed[p] / h_[p];  // 1 / tau
-  const double source = std::max(-div_v, 0.0);
-  double& alpha = model_.viscosity[p];
-  alpha = (alpha + dt * (decay * o.viscosity_min + source * o.viscosity_max)) / (1.0 + dt * (decay + source));
+  const double div_v = L.trace(), c = model_.points.sound_speed[i], reach = 2.0 * h_[i];
+  double target = o.viscosity_min;
+  if (touches_[i] != 0) {
+    target = o.viscosity_max;
+  } else if (div_v < 0.0) {
+    const double rise = -gradientOf(i, acceleration_).trace();
+    if (rise > 0.0) {
+      const Vec3 curl(L(2, 1) - L(1, 2), L(0, 2) - L(2, 0), L(1, 0) - L(0, 1));
+      const double xi = div_v * div_v / (div_v * div_v + curl.squaredNorm());
+      const double A = xi * rise * reach * reach;
+      const double steepening = std::max((L * L).trace(), 0.0) * reach * reach;
+      target = std::max(target, o.viscosity_max * A / (A + c * c + steepening));
+    }
+  }
+  double& alpha = model_.viscosity[i];
+  if (alpha < target) {
+    alpha = target;
+  } else {
+    const double decay = o.viscosity_decay * c / h_[i];  // 1 / tau
+    alpha = (alpha + dt * decay * target) / (1.0 + dt * decay);
+  }
 }
 
 void Integrator::updateMaterials(double dt) {

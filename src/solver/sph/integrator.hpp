@@ -23,6 +23,7 @@
 #include "solver/sph/pairs.hpp"
 #include "solver/sph/reconstruction.hpp"
 
+#include <span>
 #include <vector>
 
 namespace kessler::sph {
@@ -87,7 +88,8 @@ class Integrator {
   void search();
   void forces();
   void deform(double dt);
-  void switchViscosity(LocalIndex p, double div_v, double dt);
+  Mat3 gradientOf(LocalIndex i, std::span<const Vec3> u) const;
+  void switchViscosity(LocalIndex i, const Mat3& L, double dt);
   void updateMaterials(double dt);
   double stableStep() const;
   [[noreturn]] void failAtPoint(LocalIndex p, const std::string& what) const;

@@ -1,6 +1,6 @@
 // SPH (solver/sph/, docs/theory.md §10): its kernel, its pairs, the corrected gradient's patch test, linear
 // momentum through a collision, contact across a gap, bodies in contact that do not pass through each
-// other, and a longitudinal wave's speed.
+// other, the viscosity switch in a smooth convergent flow, and a longitudinal wave's speed.
 #include "../blocks.hpp"
 #include "core/error.hpp"
 #include "material/impact_material.hpp"
@@ -338,6 +338,44 @@ TEST(Sph, BodiesInContactDoNotPassThroughEachOther) {
           ++passed;
   }
   EXPECT_EQ(passed, 0) << "striker particles below the plate's first layer at t = " << method->clock().time;
+}
+
+// The viscosity switch stays off in a smooth convergent flow that no force drives (docs/theory.md §10,
+// "Artificial viscosity"), as in Noh's cold inflow: a block of cold ideal gas in the linear field
+// v = -k x compresses uniformly (div v = -3k). Morris & Monaghan's switch, whose source is -div v,
+// raised alpha to about 0.67 by t = 1/(3k); a switch that counted the flow's own steepening
+// (-tr(L L)) as a rise took it to 1. Here the interior (two kernel reaches in from every face) keeps
+// alpha_min.
+TEST(Sph, ViscositySwitchStaysOffInASmoothConvergentFlow) {
+  const double s = 0.5e-3, side = 6e-3, k = 1e4;
+  Problem problem;
+  problem.method = "sph";
+  problem.settings.solver.end_time = 1.0 / (3.0 * k);
+  BodySetup block;
+  block.name = "gas";
+  block.material = std::make_shared<ImpactMaterial>("gas", library::find("ideal-gas-5/3").parameters);
+  block.mesh = geometry::MeshRequest{geometry::Box{Vec3::Zero(), Vec3::Constant(side)}, s};
+  block.velocity_field = [&](const Vec3& x) -> Vec3 { return -k * (x - Vec3::Constant(0.5 * side)); };
+  problem.bodies = {block};
+  Model model = buildModel(problem);
+  SphMethod method(std::move(model), problem);
+  method.initialise();
+  while (!method.finished()) method.step();
+  const PointStore& points = method.state().points;
+  const double alpha_min = problem.settings.sph.viscosity_min;
+  double interior = 0.0, surface = 0.0;
+  int counted = 0;
+  for (LocalIndex p = 0; p < points.owned; ++p) {
+    // Two kernel reaches (4.8 spacings, scaled with the compression) in from every face of the block.
+    const double scale = std::exp(-k * method.clock().time), margin = 4.8 * s * scale;
+    const Vec3 centre = Vec3::Constant(0.5 * side);
+    const double from_face = 0.5 * side * scale - (points.x[p] - centre).cwiseAbs().maxCoeff();
+    double& worst = from_face > margin ? interior : surface;
+    worst = std::max(worst, method.model().viscosity[p]);
+    counted += from_face > margin;
+  }
+  EXPECT_GT(counted, 0);
+  EXPECT_LE(interior, alpha_min + 1e-9) << "interior alpha (surface: " << surface << ")";
 }
 
 // A longitudinal wave in a bar under uniaxial strain (the verification wave-speed, with SPH's
