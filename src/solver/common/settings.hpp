@@ -81,11 +81,12 @@ struct SphOptions {
   // neighbours on a cubic lattice, the usual choice for solids.
   double smoothing = 1.2;
   // Monaghan's artificial viscosity (Monaghan, Annu. Rev. Astron. Astrophys. 30:543, 1992), its
-  // linear coefficient alpha per particle by Morris & Monaghan's switch (J. Comput. Phys. 136:41,
-  // 1997): alpha rises towards viscosity_max where the particle is compressed and decays to
-  // viscosity_min over viscosity_decay^-1 sound crossings of h; the quadratic coefficient is
-  // beta = viscosity_ratio * alpha. A shock takes (1, 2), the standard pair; a smooth elastic
-  // wave keeps a tenth of it.
+  // linear coefficient alpha per particle by a switch after Cullen & Dehnen's (MNRAS 408:669, 2010;
+  // sph::Integrator::switchViscosity): alpha rises at once towards viscosity_max where the forces
+  // raise the compression, or the particle touches another body, and decays to viscosity_min over
+  // viscosity_decay^-1 sound crossings of h; the quadratic coefficient is beta = viscosity_ratio *
+  // alpha. A shock takes (1, 2), the standard pair; a smooth elastic wave or a smooth convergent
+  // flow keeps a tenth of it.
   double viscosity_max = 1.0;
   double viscosity_min = 0.1;
   double viscosity_ratio = 2.0;

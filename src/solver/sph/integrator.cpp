@@ -545,7 +545,9 @@ void Integrator::switchViscosity(LocalIndex i, const Mat3& L, double dt) {
   double target = o.viscosity_min;
   if (touches_[i] != 0) {
     target = o.viscosity_max;
-  } else if (div_v < 0.0) {
+  } else if (-div_v * h_[i] > 1e-4 * c) {
+    // (Compression slower than this, such as round-off in matter at rest, would reach a target of
+    // about 4e-4 at a shock's rise, -div a ~ -div v U_s / h: not evaluated.)
     const double rise = -gradientOf(i, acceleration_).trace();
     if (rise > 0.0) {
       const Vec3 curl(L(2, 1) - L(1, 2), L(0, 2) - L(2, 0), L(1, 0) - L(0, 1));

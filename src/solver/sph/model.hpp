@@ -15,7 +15,7 @@ struct Model : ParticleState {
   // (fixed faces, the deck's and the verification problems' planes).
   std::vector<std::uint8_t> constrained;
   std::vector<Vec3> prescribed_v;
-  // Each particle's linear viscosity coefficient alpha (Morris & Monaghan's switch, Integrator).
+  // Each particle's linear viscosity coefficient alpha (the viscosity switch, Integrator).
   std::vector<double> viscosity;
   // The finite-element reconstruction (solver/sph/reconstruction.hpp): each body's lattice, and each
   // particle's element on it ({-1, -1, -1} for a particle of a body that is not a lattice).
