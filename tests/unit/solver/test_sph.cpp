@@ -342,10 +342,11 @@ TEST(Sph, BodiesInContactDoNotPassThroughEachOther) {
 
 // The viscosity switch stays off in a smooth convergent flow that no force drives (docs/theory.md §10,
 // "Artificial viscosity"), as in Noh's cold inflow: a block of cold ideal gas in the linear field
-// v = -k x compresses uniformly (div v = -3k). Morris & Monaghan's switch, whose source is -div v,
-// raised alpha to about 0.67 by t = 1/(3k); a switch that counted the flow's own steepening
-// (-tr(L L)) as a rise took it to 1. Here the interior (two kernel reaches in from every face) keeps
-// alpha_min.
+// v = -k x compresses uniformly, each particle moving on at its own speed (x = x0 (1 - k t), so
+// div v = -3k / (1 - k t) steepens with no force acting). Morris & Monaghan's switch, whose source is
+// -div v, raised alpha to 0.68 by t = 1/(3k); counting the flow's own steepening, -tr(L L), as a rise
+// would take a cold gas's (c = 0) to alpha_max. Here the interior (two kernel reaches in from every
+// face) keeps alpha_min.
 TEST(Sph, ViscositySwitchStaysOffInASmoothConvergentFlow) {
   const double s = 0.5e-3, side = 6e-3, k = 1e4;
   Problem problem;
@@ -365,10 +366,10 @@ TEST(Sph, ViscositySwitchStaysOffInASmoothConvergentFlow) {
   const double alpha_min = problem.settings.sph.viscosity_min;
   double interior = 0.0, surface = 0.0;
   int counted = 0;
+  // Two kernel reaches (4.8 spacings, shrunk with the block) in from every face.
+  const double scale = 1.0 - k * method.clock().time, margin = 4.8 * s * scale;
+  const Vec3 centre = Vec3::Constant(0.5 * side);
   for (LocalIndex p = 0; p < points.owned; ++p) {
-    // Two kernel reaches (4.8 spacings, scaled with the compression) in from every face of the block.
-    const double scale = std::exp(-k * method.clock().time), margin = 4.8 * s * scale;
-    const Vec3 centre = Vec3::Constant(0.5 * side);
     const double from_face = 0.5 * side * scale - (points.x[p] - centre).cwiseAbs().maxCoeff();
     double& worst = from_face > margin ? interior : surface;
     worst = std::max(worst, method.model().viscosity[p]);
