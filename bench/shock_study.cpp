@@ -6,7 +6,8 @@
 // `--stabilisation A` (OtmOptions::volume_stabilisation), `--relaxation K` (OtmOptions::volume_relaxation),
 // `--contact-distance D`, `--cfl X`, `--method otm|sph|rkpm`, `--lateral-lock` (every point
 // held laterally, not only the rollers), `--noh-end T` (the Noh problem's end time, 0.6 by default; the
-// shock is then at T/3). Not a test.
+// shock is then at T/3), `--alpha-min A` and `--alpha-max A` (SPH's viscosity switch's bounds,
+// SphOptions::viscosity_min and viscosity_max). Not a test.
 #include "core/error.hpp"
 #include "verify/fixtures.hpp"
 #include "verify/impact_problems.hpp"
@@ -44,6 +45,10 @@ int main(int argc, char** argv) {
       settings.otm.volume_relaxation = std::atof(argv[++first]);
     } else if (option == "--contact-distance" && first + 1 < argc) {
       settings.otm.contact_distance = std::atof(argv[++first]);
+    } else if (option == "--alpha-min" && first + 1 < argc) {
+      settings.sph.viscosity_min = std::atof(argv[++first]);
+    } else if (option == "--alpha-max" && first + 1 < argc) {
+      settings.sph.viscosity_max = std::atof(argv[++first]);
     } else if (option == "--cfl" && first + 1 < argc) {
       settings.solver.cfl = std::atof(argv[++first]);
     } else {
