@@ -305,8 +305,12 @@ void Run::printSummary() const {
   log::info("{} steps to t = {:.4g} s in {:.1f} s wall ({:.3g} us per material-point step, {} threads)", steps(),
             time(), record_.wall_seconds, point_steps > 0 ? 1e6 * record_.wall_seconds / point_steps : 0.0,
             record_.threads);
-  log::info("energy: kinetic {:.6g} -> {:.6g} J, internal {:.6g} -> {:.6g} J, total {:.6g} -> {:.6g} J", e0.kinetic,
-            e1.kinetic, e0.internal, e1.internal, e0.total(), e1.total());
+  // (The stabilisation's share where a method keeps one: docs/theory.md §4 and §10.)
+  const std::string stored = e0.stabilisation != 0.0 || e1.stabilisation != 0.0
+                                 ? fmt::format(", stabilisation {:.6g} -> {:.6g} J", e0.stabilisation, e1.stabilisation)
+                                 : std::string();
+  log::info("energy: kinetic {:.6g} -> {:.6g} J, internal {:.6g} -> {:.6g} J{}, total {:.6g} -> {:.6g} J", e0.kinetic,
+            e1.kinetic, e0.internal, e1.internal, stored, e0.total(), e1.total());
   log::info("momentum: ({:.6g}, {:.6g}, {:.6g}) -> ({:.6g}, {:.6g}, {:.6g}) kg m/s", e0.momentum[0], e0.momentum[1],
             e0.momentum[2], e1.momentum[0], e1.momentum[1], e1.momentum[2]);
   // (A distributed run's notes are those of the whole run, gathered by finish().)

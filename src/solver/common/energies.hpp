@@ -12,8 +12,8 @@ struct Energies {
   double internal = 0.0;  // sum m_p e_p
   // Energy a method's stabilisation stores, kept apart from the material's internal energy, which it
   // must not heat (OTM: the work of the volume stabilisation's pressure, docs/theory.md §4; SPH: the
-  // heat of its viscosity in a law without a thermal state, which takes none, docs/theory.md §10); 0
-  // for a method without one.
+  // heat of its viscosity in a law without a thermal state, which takes none, less the work of its
+  // artificial stress, docs/theory.md §10); 0 for a method without one.
   double stabilisation = 0.0;
   Vec3 momentum = Vec3::Zero();
   double total() const { return kinetic + internal + stabilisation; }

@@ -79,11 +79,11 @@ void Integrator::initialise() {
   clock_.dt_next = clock_.dt_initial = stableStep();
 }
 
-void Integrator::restore(const Clock& clock, LocalIndex distorted, double dissipated) {
+void Integrator::restore(const Clock& clock, LocalIndex distorted, double stored) {
   body_points_ = bodyRanges(model_.points.body, model_.points.owned, model_.bodies.size());
   clock_ = clock;
   distorted_ = distorted;
-  dissipated_ = dissipated;
+  stored_ = stored;
   reconstruction_ = Reconstruction(model_);  // the restored elements
   volume_rate_.assign(static_cast<std::size_t>(model_.points.owned), 0.0);
   if (distribution_) split();
@@ -92,11 +92,11 @@ void Integrator::restore(const Clock& clock, LocalIndex distorted, double dissip
   forces();
 }
 
-void Integrator::adopt(const Clock& clock, LocalIndex distorted, double dissipated) {
+void Integrator::adopt(const Clock& clock, LocalIndex distorted, double stored) {
   body_points_ = bodyRanges(model_.points.body, model_.points.owned, model_.bodies.size());
   clock_ = clock;
   distorted_ = distorted;
-  dissipated_ = dissipated;
+  stored_ = stored;
   reconstruction_.rebuild(model_);
 }
 
@@ -147,13 +147,21 @@ void Integrator::step() {
     {
       ScopedPhase phase(timers_, "point update");
       const double dt_kick = 0.5 * (clock_.dt_last + dt);
+      const bool artificial = settings_.sph.artificial_stress > 0.0;
+      if (artificial) artificial_work_.resize(static_cast<std::size_t>(points.owned));
 #pragma omp parallel for schedule(static)
       for (LocalIndex p = 0; p < points.owned; ++p) {
+        const Vec3 before = points.v[p];
         points.v[p] += dt_kick * acceleration_[p];
         // (A wall meets the particle's cell, as RKPM's: docs/theory.md §10.)
         imposeBoundaries(model_.constrained[p], model_.prescribed_v[p], settings_.walls, points.x[p], dt, points.v[p],
                          particle_reach * points.spacing0[p]);
+        if (artificial) artificial_work_[p] = dt_kick * artificial_force_[p].dot(0.5 * (before + points.v[p]));
       }
+      // The artificial stress is no stress of the material, and no law books its work: the kinetic
+      // energy its forces gave over the kick (at the kick's mean velocity, exactly the leapfrog's) comes
+      // out of the store (an exact sum over own particles and every rank).
+      if (artificial) stored_ -= ownSum(share(), points.owned, [&](LocalIndex p) { return artificial_work_[p]; });
       deform(dt);
     }
     {
@@ -325,6 +333,7 @@ void Integrator::forces() {
   const auto n = static_cast<std::size_t>(points.owned);
   acceleration_.resize(n);
   viscous_power_.resize(n);
+  artificial_force_.resize(n);
   signal_.resize(n);
   // Per particle, what a pair reads of either end, in one record (a pair's other end is near in
   // space, not in memory: its record is three cache lines where a dozen arrays were a dozen): among
@@ -394,6 +403,10 @@ void Integrator::forces() {
   {
     // Blocks of about equal numbers of pairs.
     const int t = omp_get_thread_num(), nt = omp_get_num_threads();
+#pragma omp single
+    artificial_reactions_.resize(static_cast<std::size_t>(nt));
+    std::vector<std::pair<Index, Vec3>>& reactions = artificial_reactions_[static_cast<std::size_t>(t)];
+    reactions.clear();
     const LocalIndex begin = entryBlockStart(pairs_.offset, t, nt), end = entryBlockStart(pairs_.offset, t + 1, nt);
     const auto listedHere = [&](LocalIndex i) {
       return pairs_.listed_offset[i] == pairs_.listed_offset[i + 1] ||
@@ -403,6 +416,7 @@ void Integrator::forces() {
       const PairEnd& a = ends_[i];
       Vec3 force = Vec3::Zero();
       double power = 0.0, signal = 0.0;
+      Vec3 artificial_force = Vec3::Zero();
       for (Index e = pairs_.offset[i]; e < pairs_.offset[i + 1]; ++e) {
         const Pair& pair = pairs_.pair[e];
         const LocalIndex j = pair.other;
@@ -424,7 +438,12 @@ void Integrator::forces() {
             const double ratio = reference > 0.0 ? std::min(kernel / reference, 1.0) : 0.0;
             double fn = 1.0;
             for (int k = 0; k < o.artificial_stress_exponent; ++k) fn *= ratio;
-            f.noalias() += a.mass * b.mass * fn * sumTimes(artificial_[i], artificial_[j], m, grad);
+            const double scale = a.mass * b.mass * fn;
+            const Vec3 stress = sumTimes(artificial_[i], artificial_[j], m, grad);
+            for (int k = 0; k < 3; ++k) f[k] = std::fma(scale, stress[k], f[k]);  // (one rounding each)
+            const Vec3 artificial = scale * stress;
+            artificial_force += artificial;
+            if (j != i) reactions.emplace_back(e, artificial);  // (a pair with its own image acts on i alone)
           }
         }
         PairShare& share = pair_share_[e];
@@ -447,6 +466,7 @@ void Integrator::forces() {
         power += share.power;
         signal = std::max(signal, share.signal);
       }
+      artificial_force_[i] = artificial_force;
       if (!own.own(i)) continue;
       if (listedHere(i)) {
         sumListed(i, force, power, signal);
@@ -460,6 +480,13 @@ void Integrator::forces() {
     for (LocalIndex i = begin; i < end; ++i)
       if (own.own(i) && !listedHere(i)) sumListed(i, acceleration_[i], viscous_power_[i], signal_[i]);
   }
+  // The artificial forces' reactions on the other ends, in the order of the listing particles (the
+  // same for any thread count): the kick books their work (step()).
+  for (const std::vector<std::pair<Index, Vec3>>& reactions : artificial_reactions_)
+    for (const auto& [e, f] : reactions) {
+      const Pair& pair = pairs_.pair[static_cast<std::size_t>(e)];
+      artificial_force_[pair.other] -= mirrors.vector(f, mirrors.inverse(pair.mirror));
+    }
   // A ghost's sums lack the pairs this rank does not hold (the kick and the heating read them).
   if (distribution_) {
     distribution_->refresh(acceleration_);
@@ -582,7 +609,7 @@ void Integrator::updateMaterials(double dt) {
     for (std::size_t b = 0; b < athermal.size(); ++b)
       athermal[b] = !model_.materials[model_.bodies[b].material]->takesHeat();
     if (std::find(athermal.begin(), athermal.end(), 1) != athermal.end())  // the same on every rank
-      dissipated_ += ownSum(share(), points.owned, [&](LocalIndex p) {
+      stored_ += ownSum(share(), points.owned, [&](LocalIndex p) {
         return points.debris(p) || !athermal[static_cast<std::size_t>(points.body[p])] ? 0.0 : heat_[p];
       });
   }
@@ -636,7 +663,7 @@ double Integrator::stableStep() const {
 }
 
 Energies Integrator::energies() const {
-  return pointEnergies(model_.points, dissipated_, share());
+  return pointEnergies(model_.points, stored_, share());
 }
 
 void Integrator::failAtPoint(LocalIndex p, const std::string& what) const {

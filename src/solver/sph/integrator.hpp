@@ -24,6 +24,7 @@
 #include "solver/sph/reconstruction.hpp"
 
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace kessler::sph {
@@ -45,10 +46,10 @@ class Integrator {
   // A restored run: the clock and the elements failed by distortion, then the nodes and forces of
   // the restored state (a pure function of it, so the run goes on as the one that wrote the
   // checkpoint).
-  void restore(const Clock& clock, LocalIndex distorted, double dissipated);
+  void restore(const Clock& clock, LocalIndex distorted, double stored);
   // A gathered copy of a distributed run (for output and checkpoints): the run's clock and count of
   // distorted elements, and the nodes of its particles' state; no pairs or forces.
-  void adopt(const Clock& clock, LocalIndex distorted, double dissipated);
+  void adopt(const Clock& clock, LocalIndex distorted, double stored);
   void step();
 
   bool finished() const { return clock_.time >= settings_.solver.end_time * (1.0 - 1e-12); }
@@ -74,9 +75,10 @@ class Integrator {
   }
   // Elements failed by their distortion so far.
   LocalIndex distorted() const { return distorted_; }
-  // The viscosity's heat so far in bodies whose law has no thermal state (it takes none), J: booked
-  // apart, as the energies' stabilisation, so that the budget closes.
-  double dissipated() const { return dissipated_; }
+  // The energy SPH's stabilisations hold apart from the material so far, J, booked as the energies'
+  // stabilisation so that the budget closes: the viscosity's heat in bodies whose law has no thermal
+  // state (it takes none), less the work the artificial stress has done on the particles.
+  double stored() const { return stored_; }
 
  private:
   // Which particles count and the ranks to reduce over (every particle, no ranks, on one process).
@@ -102,7 +104,7 @@ class Integrator {
   Pairs pairs_;
   mutable Reconstruction reconstruction_;  // its nodes are a function of the particles (nodes())
   LocalIndex distorted_ = 0;
-  double dissipated_ = 0.0;
+  double stored_ = 0.0;
   Eigenerosion erosion_;
   DebrisRelease release_;
   std::vector<IndexRange> body_points_;
@@ -111,6 +113,12 @@ class Integrator {
   std::vector<Mat3> correction_;       // B_i: the inverse of sum_j V_j (x_j - x_i) (x) grad_i W_ij
   std::vector<Vec3> acceleration_;     // of the last forces
   std::vector<double> viscous_power_;  // the viscosity's heating of each particle, W
+  // The artificial stress's share of each particle's last forces, N (forces()), and its work over the
+  // kick of each particle, J (step()).
+  std::vector<Vec3> artificial_force_;
+  std::vector<double> artificial_work_;
+  // Per thread, the artificial forces of the pairs its particles list, by pair, for the other ends.
+  std::vector<std::vector<std::pair<Index, Vec3>>> artificial_reactions_;
   std::vector<double> signal_;         // the largest viscous signal speed mu of each particle, m/s
   std::vector<double> volume_rate_;    // ln J / dt of the last step
   std::vector<double> lattice_reach_;  // a distributed run's: Reconstruction::latticeReach
