@@ -139,7 +139,7 @@ void SphMethod::save(StateWriter& out) const {
   out.array("/sph/prescribed_v", model_.prescribed_v);
   out.array("/sph/viscosity", model_.viscosity);
   out.scalar("sph_distorted", static_cast<std::int64_t>(integrator_.distorted()));
-  out.scalar("sph_stored", integrator_.stored());
+  out.scalar("sph_dissipated", integrator_.stored());  // (the stabilisation's store, by its first name)
   std::vector<std::int32_t> element;
   for (const std::array<int, 3>& e : model_.element) element.insert(element.end(), e.begin(), e.end());
   out.array("/sph/element", element);
@@ -164,7 +164,7 @@ void SphMethod::load(const StateReader& in) {
   for (std::size_t b = 0; b < model_.bodies.size(); ++b) model_.lattices[b] = {lattices[2 * b], lattices[2 * b + 1]};
   integrator_.restore(Clock{in.doubleScalar("sph_time"), in.intScalar("sph_steps"), in.doubleScalar("sph_dt_last"),
                             in.doubleScalar("sph_dt_next"), in.doubleScalar("sph_dt_initial")},
-                      static_cast<LocalIndex>(in.intScalar("sph_distorted")), in.doubleScalar("sph_stored"));
+                      static_cast<LocalIndex>(in.intScalar("sph_distorted")), in.doubleScalar("sph_dissipated"));
 }
 
 }  // namespace kessler::sph
