@@ -54,6 +54,9 @@ struct Hugoniot3dResult {
   double particle_velocity, shock_speed, pressure, density;  // plateau averages (pressure without viscosity)
   double max_density;                                        // the densest point of the plateau, kg/m^3
   double max_pressure;  // the largest pressure of a plateau point, viscosity included, Pa
+  // The plateau's density by the space it fills, not by its points' volumes: rho0 over the
+  // least-squares slope of the points' heights z against their initial heights z0.
+  double packed_density;
   double reference_velocity, reference_shock_speed, reference_pressure, reference_density, reference_density0;
   long steps, points, plateau_points;
   double energy_change;       // relative change of the total energy over the run
@@ -85,13 +88,23 @@ struct NohResult {
 NohResult runNoh3d(double mesh_size, MethodSettings settings = {}, double end_time = 0.6);
 Outcome noh3d();
 
-// mesh_size: the Gmsh target edge length, m; settings: the solver's (end_time is set here);
-// one_body: one slab whose halves meet at the impact speed (no contact between bodies) instead of a
-// flyer striking a target.
-// lateral_lock: every point keeps a zero lateral velocity, not only those on the rollers (a study:
-// the exact solution's lateral velocity is zero everywhere).
-Hugoniot3dResult runHugoniot3d(double mesh_size, MethodSettings settings = {}, bool one_body = true,
-                               bool lateral_lock = false);
+// Variants of the hugoniot-3d problem for the shock study (bench/shock_study.cpp).
+struct Hugoniot3dOptions {
+  // One slab whose halves meet at the impact speed (no contact between bodies) instead of a flyer
+  // striking a target.
+  bool one_body = true;
+  // Every point keeps a zero lateral velocity, not only those on the rollers (the exact solution's
+  // lateral velocity is zero everywhere).
+  bool lateral_lock = false;
+  // The planar Noh problem instead of aluminium (Noh 1987): the library's cold ideal gas (gamma 5/3,
+  // rho0 1 kg/m^3), the halves meeting at 2 m/s. Behind the shock rho = 4 rho0, up = 1 m/s,
+  // Us = 4/3 m/s ahead of the gas, P = 4/3 Pa and e = 1/2 J/kg: the strong-shock Hugoniot is
+  // Us = (gamma + 1)/2 up, the linear one with c0 = 0 and s = (gamma + 1)/2.
+  bool gas = false;
+};
+
+// mesh_size: the Gmsh target edge length, m; settings: the solver's (end_time is set here).
+Hugoniot3dResult runHugoniot3d(double mesh_size, MethodSettings settings = {}, Hugoniot3dOptions options = {});
 Outcome hugoniot3d();
 
 struct TaylorBarResult {
