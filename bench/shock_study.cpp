@@ -93,10 +93,9 @@ int main(int argc, char** argv) {
     const int digits = options.gas ? 4 : 0;
     const char* pa = options.gas ? "Pa" : "GPa";
     fmt::print(
-        "mesh {:.3f} mm: {} points, {} steps; rho {:.4f} rho0 ({:+.2f}%; by the space {:.4f}, {:+.2f}%), densest "
-        "{:.4f} "
-        "({:+.2f}%), P {:.4g} {} ({:+.2f}%), up {:.{}f} m/s ({:+.2f}%), Us {:.{}f} m/s ({:+.2f}%), largest plateau "
-        "pressure {:.4g} {}, energy {:+.3f}%\n",
+        "mesh {:.3f} mm: {} points, {} steps; rho {:.4f} rho0 ({:+.2f}%; by the space {:.4f}, {:+.2f}%), "
+        "densest {:.4f} ({:+.2f}%), P {:.4g} {} ({:+.2f}%), up {:.{}f} m/s ({:+.2f}%), Us {:.{}f} m/s ({:+.2f}%), "
+        "largest plateau pressure {:.4g} {}, energy {:+.3f}%\n",
         1e3 * mesh, r.points, r.steps, r.density / rho0, 100 * (r.density / r.reference_density - 1),
         r.packed_density / rho0, 100 * (r.packed_density / r.reference_density - 1), r.max_density / rho0,
         100 * (r.max_density / r.reference_density - 1), p_unit * r.pressure, pa,

@@ -240,8 +240,8 @@ Outcome hugoniot3d() {
   o.passed = o.passed && e_up <= 0.03 && e_us <= 0.03 && e_rho <= 0.03 && e_max <= 0.05;
   o.note = fmt::format(
       "rho/rho0 {:.4f} vs {:.4f} ({:.2f}%, tol 3%; by the space it fills {:.4f}, not judged); densest plateau point "
-      "{:.4f} rho0 ({:+.2f}% from the Hugoniot, "
-      "tol 5%); up {:.0f} m/s vs {:.0f} ({:.2f}%, tol 3%); Us {:.0f} m/s vs {:.0f} ({:.2f}%, tol 3%); largest plateau "
+      "{:.4f} rho0 ({:+.2f}% from the Hugoniot, tol 5%); up {:.0f} m/s vs {:.0f} ({:.2f}%, tol 3%); Us {:.0f} m/s vs "
+      "{:.0f} ({:.2f}%, tol 3%); largest plateau "
       "pressure with viscosity {:.1f} GPa; mesh {} mm, {} points ({} in the plateau), {} steps",
       r.density / r.reference_density0, r.reference_density / r.reference_density0, 100 * e_rho,
       r.packed_density / r.reference_density0, r.max_density / r.reference_density0, 100 * e_max, r.particle_velocity,
