@@ -20,7 +20,8 @@ const parallel::Communicator& world() {
 }
 
 // A 4 mm cube onto a 12 x 12 mm plate 3 mm thick, or (a shield, on the symmetry plane x = 0) a
-// 2 mm plate with a rear wall as thick 2 mm behind it; 0.5 mm lattice elements.
+// 2 mm plate with a rear wall as thick 2 mm behind it, both 18 mm wide (so that three ranks' halos,
+// four rings of elements deep, do not each hold the whole); 0.5 mm lattice elements.
 Problem impact(const MaterialPtr& material, const Vec3& velocity, bool shield) {
   Problem problem;
   problem.method = "sph";
@@ -34,11 +35,11 @@ Problem impact(const MaterialPtr& material, const Vec3& velocity, bool shield) {
     b.velocity = v;
     problem.bodies.push_back(b);
   };
-  const double thickness = shield ? 1e-3 : 3e-3;
-  body("plate", Vec3(x0, -6e-3, -thickness), Vec3(6e-3, 6e-3, 0.0), Vec3::Zero());
+  const double thickness = shield ? 1e-3 : 3e-3, half_width = shield ? 9e-3 : 6e-3;
+  body("plate", Vec3(x0, -half_width, -thickness), Vec3(6e-3, half_width, 0.0), Vec3::Zero());
   body("projectile", Vec3(px0, -2e-3, 0.3e-3), Vec3(2e-3, 2e-3, 4.3e-3), velocity);
   if (shield) {
-    body("wall", Vec3(x0, -6e-3, -4e-3), Vec3(6e-3, 6e-3, -3e-3), Vec3::Zero());
+    body("wall", Vec3(x0, -half_width, -4e-3), Vec3(6e-3, half_width, -3e-3), Vec3::Zero());
     problem.symmetry_axes = {0};
   }
   return problem;

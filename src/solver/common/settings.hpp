@@ -99,6 +99,11 @@ struct SphOptions {
   // scaled Jacobian of its corners falls below this (0.2: a corner sheared to 11.5 degrees, a
   // shear strain of about 5, or inverted).
   double element_min_quality = 0.2;
+  // The share of the deviatoric deformation and stress an intact lattice particle takes through its
+  // reconstructed hexahedron (sph::ElementGradient; docs/theory.md §10), the rest through SPH's
+  // pairs; 0: SPH alone. Half each: the hexahedra carry a surface's shear tractions to the particles
+  // that bear them, and SPH's pairs hold the hexahedra's zero-energy modes.
+  double element_share = 0.5;
 };
 
 // RKPM's options (docs/theory.md §12).

@@ -46,6 +46,7 @@ Integrator::Integrator(Model& model, const Settings& settings, Distribution* dis
       settings_(settings),
       distribution_(distribution),
       reconstruction_(model),
+      elements_(settings.sph.element_share),
       erosion_(settings.solver.erosion_radius),
       release_(settings.solver.erosion_radius) {
   KESSLER_VERIFY(settings.solver.cfl > 0.0 && settings.solver.cfl <= 1.0, "cfl must lie in (0, 1], got {}",
@@ -56,6 +57,8 @@ Integrator::Integrator(Model& model, const Settings& settings, Distribution* dis
                      model.viscosity.size() == model.points.x.size(),
                  "{} constraints and {} viscosities for {} particles", model.constrained.size(), model.viscosity.size(),
                  model.points.x.size());
+  KESSLER_VERIFY(settings.sph.element_share >= 0.0 && settings.sph.element_share <= 1.0,
+                 "element_share must lie in [0, 1], got {}", settings.sph.element_share);
   KESSLER_VERIFY(settings.sph.viscosity_min >= 0.0 && settings.sph.viscosity_min <= settings.sph.viscosity_max,
                  "viscosity coefficients: need 0 <= min {} <= max {}", settings.sph.viscosity_min,
                  settings.sph.viscosity_max);
@@ -85,6 +88,7 @@ void Integrator::restore(const Clock& clock, LocalIndex distorted, double stored
   distorted_ = distorted;
   stored_ = stored;
   reconstruction_ = Reconstruction(model_);  // the restored elements
+  elements_.renumbered();
   volume_rate_.assign(static_cast<std::size_t>(model_.points.owned), 0.0);
   if (distribution_) split();
   search();
@@ -103,8 +107,22 @@ void Integrator::adopt(const Clock& clock, LocalIndex distorted, double stored) 
 // Every rank holds the whole model (built or restored alike); each keeps its part, with the reach of
 // every particle's lattice neighbours measured while it holds them all.
 void Integrator::split() {
-  lattice_reach_ = reconstruction_.latticeReach(model_);
+  lattice_reach_ = latticeReach(true);
   distribution_->split(model_, {volume_rate_, lattice_reach_});
+}
+
+// The reach of each particle's lattice neighbours (its own element's), or with the elements' share
+// of the deviator, of four rings of them: an own particle's force reads the nodes two rings away,
+// whose hexahedra's nodes are placed by particles two rings further (ElementGradient).
+std::vector<double> Integrator::latticeReach(bool whole) const {
+  const Share own = whole ? Share{} : share();
+  std::vector<double> reach = reconstruction_.latticeReach(model_, own);
+  if (elements_.share() > 0.0)
+    for (int ring = 2; ring <= 4; ++ring) {
+      if (!whole) distribution_->refresh(reach);
+      reach = reconstruction_.extendReach(model_, reach, own);
+    }
+  return reach;
 }
 
 // The ghosts the next search needs: each own particle is sent as far as any other rank's particle
@@ -134,8 +152,10 @@ void Integrator::rebuildHalo() {
     const double pairs = smoothingLength(p) + h_max;
     return points.broken[p] ? pairs : std::max({pairs, ball, lattice_reach_[p]});
   };
-  if (distribution_->rebuild(model_, {volume_rate_, lattice_reach_}, work, reach))
+  if (distribution_->rebuild(model_, {volume_rate_, lattice_reach_}, work, reach)) {
     reconstruction_ = Reconstruction(model_);  // the elements of the particles held now
+    elements_.renumbered();
+  }
   body_points_ = bodyRanges(points.body, points.owned, model_.bodies.size());
 }
 
@@ -171,7 +191,7 @@ void Integrator::step() {
     {
       ScopedPhase phase(timers_, "erosion");
       // (The lattice reach before this step's failures: a particle that fails now counts as intact.)
-      if (distribution_) lattice_reach_ = reconstruction_.latticeReach(model_, share());
+      if (distribution_) lattice_reach_ = latticeReach(false);
       reconstruction_.rebuild(model_);
       distorted_ += reconstruction_.failDistorted(model_, settings_.sph.element_min_quality, share());
       erosion_.apply(model_, share());
@@ -341,10 +361,11 @@ void Integrator::forces() {
   // the artificial stress R (tensile principal stresses only; `tensile` where it is not zero).
   ends_.resize(n);
   artificial_.resize(n);
+  elements_.update(model_, reconstruction_, mirrors, touches_, distribution_ ? distribution_->layout() : 0);
 #pragma omp parallel for schedule(static)
   for (LocalIndex p = 0; p < points.owned; ++p) {
     PairEnd& end = ends_[p];
-    end.stress_b = points.stress[p] * correction_[p].transpose();
+    end.stress_b = elements_.pairStress(p, points.stress[p]) * correction_[p].transpose();
     end.x = points.x[p];
     end.v = points.v[p];
     end.volume = points.volume[p];
@@ -487,6 +508,13 @@ void Integrator::forces() {
       const Pair& pair = pairs_.pair[static_cast<std::size_t>(e)];
       artificial_force_[pair.other] -= mirrors.vector(f, mirrors.inverse(pair.mirror));
     }
+  // The elements' share of the deviator, from their nodes (in the nodes' order: the same for any
+  // thread count, and on every rank for the particles it owns).
+  if (elements_.share() > 0.0) {
+    element_force_.assign(n, Vec3::Zero());
+    elements_.addForces(points, mirrors, element_force_);
+    for (LocalIndex p = 0; p < points.owned; ++p) acceleration_[p] += element_force_[p] / points.mass[p];
+  }
   // A ghost's sums lack the pairs this rank does not hold (the kick and the heating read them).
   if (distribution_) {
     distribution_->refresh(acceleration_);
@@ -517,12 +545,14 @@ void Integrator::deform(double dt) {
   volume_rate_.resize(static_cast<std::size_t>(points.owned));
   const Share own = share();
   LocalIndex bad = points.owned;
+  elements_.moveNodes(points.v, pairs_.mirrors());
 #pragma omp parallel for schedule(static) reduction(min : bad)
   for (LocalIndex i = 0; i < points.owned; ++i) {
     if (!own.own(i)) continue;  // a ghost's deformation is its owner's (refreshed below)
     points.dF[i].setIdentity();
     if (points.debris(i)) continue;
-    const Mat3 L = gradientOf(i, points.v);
+    Mat3 L = gradientOf(i, points.v);
+    if (elements_.takesPart(i)) L = elements_.blend(i, L);
     switchViscosity(i, L, dt);
     const Mat3 half = 0.5 * dt * L;
     const Mat3 dF = (Mat3::Identity() - half).inverse() * (Mat3::Identity() + half);

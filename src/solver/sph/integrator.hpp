@@ -19,6 +19,7 @@
 #include "solver/common/settings.hpp"
 #include "solver/common/walls.hpp"
 #include "solver/sph/distribution.hpp"
+#include "solver/sph/element_gradient.hpp"
 #include "solver/sph/model.hpp"
 #include "solver/sph/pairs.hpp"
 #include "solver/sph/reconstruction.hpp"
@@ -87,6 +88,10 @@ class Integrator {
   // the next search.
   void split();
   void rebuildHalo();
+  // Per particle held, how far a distributed run's halo sends it for the reconstruction's sake
+  // (Reconstruction::latticeReach, over as many rings of elements as the elements' share reads);
+  // `whole` while every rank holds the whole model (split).
+  std::vector<double> latticeReach(bool whole) const;
   void search();
   void forces();
   void deform(double dt);
@@ -103,6 +108,7 @@ class Integrator {
   PhaseTimers timers_;
   Pairs pairs_;
   mutable Reconstruction reconstruction_;  // its nodes are a function of the particles (nodes())
+  ElementGradient elements_;               // the elements' share of the deviator
   LocalIndex distorted_ = 0;
   double stored_ = 0.0;
   Eigenerosion erosion_;
@@ -112,6 +118,7 @@ class Integrator {
   std::vector<double> spacing_;        // and spacings
   std::vector<Mat3> correction_;       // B_i: the inverse of sum_j V_j (x_j - x_i) (x) grad_i W_ij
   std::vector<Vec3> acceleration_;     // of the last forces
+  std::vector<Vec3> element_force_;    // the elements' share of them, N (forces())
   std::vector<double> viscous_power_;  // the viscosity's heating of each particle, W
   // The artificial stress's share of each particle's last forces, N (forces()), and its work over the
   // kick of each particle, J (step()).

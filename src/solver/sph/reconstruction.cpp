@@ -144,6 +144,23 @@ std::vector<double> Reconstruction::latticeReach(const Model& model, const Share
   return reach;
 }
 
+std::vector<double> Reconstruction::extendReach(const Model& model, const std::vector<double>& reach,
+                                                const Share& share) const {
+  const PointStore& points = model.points;
+  std::vector<double> further(static_cast<std::size_t>(points.owned), 0.0);
+#pragma omp parallel for schedule(static)
+  for (LocalIndex p = 0; p < points.owned; ++p) {
+    if (element_nodes_[p][0] < 0 || points.unlinked(p) || !share.own(p)) continue;
+    double farthest = reach[p];
+    for (const LocalIndex node : element_nodes_[p])
+      for (const LocalIndex q : node_elements_[node])
+        if (q >= 0 && q != p && !points.unlinked(q))
+          farthest = std::max(farthest, (points.x[q] - points.x[p]).norm() + reach[q]);
+    further[p] = farthest;
+  }
+  return further;
+}
+
 NodeCloud Reconstruction::cloud() const {
   // Not the bodies' surfaces: SPH's walls and contact act on the particles' cells (node_cloud.hpp).
   return {id_, body_, x_, v_, mass_, static_cast<LocalIndex>(x_.size()), false};

@@ -41,10 +41,20 @@ class Reconstruction {
   // across ranks"), so that a rank holds every intact neighbour of its own intact elements and
   // rebuilds their nodes as one process.
   std::vector<double> latticeReach(const Model& model, const Share& share = {}) const;
+  // One ring of elements further: per particle held, the largest distance to an intact particle
+  // whose element shares a node with its own plus that particle's `reach` (the owners' values for
+  // ghosts), a bound on the distance to any intact particle one ring beyond what `reach` bounds.
+  std::vector<double> extendReach(const Model& model, const std::vector<double>& reach, const Share& share = {}) const;
   // The smallest scaled corner Jacobian of particle p's element at the last failDistorted (1: a cube);
   // NaN for a particle without an element, or broken or loose before it, or a ghost.
   double quality(LocalIndex p) const { return quality_[static_cast<std::size_t>(p)]; }
   NodeCloud cloud() const;
+  // The lattice: each node's elements and each element's nodes by corner (bit 0: +x, 1: +y, 2: +z;
+  // -1 if none; an element is its particle), and their places in the reference configuration.
+  const std::vector<std::array<LocalIndex, 8>>& nodeElements() const { return node_elements_; }
+  const std::vector<std::array<LocalIndex, 8>>& elementNodes() const { return element_nodes_; }
+  const std::vector<Vec3>& nodeReference() const { return reference_; }
+  const std::vector<Vec3>& particleReference() const { return particle_reference_; }
 
  private:
   std::vector<Index> id_;

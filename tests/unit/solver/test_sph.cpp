@@ -1,4 +1,5 @@
-// SPH (solver/sph/, docs/theory.md §10): its kernel, its pairs, the corrected gradient's patch test, linear
+// SPH (solver/sph/, docs/theory.md §10): its kernel, its pairs, the corrected gradient's patch test, the
+// elements' share of the deviator (exact for a linear field, its forces the adjoint), linear
 // momentum through a collision, contact across a gap, bodies in contact that do not pass through each
 // other, the viscosity switch in a smooth convergent flow, a longitudinal wave's speed, and the artificial
 // stress: its work booked in the energy budget, and a stretched column held against the tensile instability.
@@ -8,6 +9,7 @@
 #include "material/impact_material.hpp"
 #include "material/library.hpp"
 #include "solver/methods.hpp"
+#include "solver/sph/element_gradient.hpp"
 #include "solver/sph/kernel.hpp"
 #include "solver/sph/pairs.hpp"
 #include "solver/sph/reconstruction.hpp"
@@ -632,6 +634,121 @@ TEST(SphReconstruction, ShearedElementsFailTheirMaterialDoesNot) {
   }
   r.rebuild(model);
   EXPECT_EQ(r.failDistorted(model, 0.2), 0);
+}
+
+// A 4 x 4 x 4 lattice block (1 mm elements) from x = 0, moved by x = A X + c.
+Model movedBlock(const Mat3& A, const Vec3& c) {
+  Problem problem;
+  problem.method = "sph";
+  problem.settings.solver.end_time = 1e-6;
+  BodySetup block;
+  block.name = "block";
+  block.material = testing::aluminium();
+  block.mesh = geometry::StructuredBox{geometry::Box{Vec3::Zero(), Vec3(4e-3, 4e-3, 4e-3)}, {4, 4, 4}};
+  problem.bodies = {block};
+  Model model = buildModel(problem);
+  for (LocalIndex p = 0; p < model.points.size(); ++p) {
+    model.points.x[p] = A * model.points.x[p] + c;
+    model.points.F[p] = A;
+  }
+  return model;
+}
+
+// The particle of element (1, 1, 1), inside the block.
+LocalIndex insideParticle(const Model& model) {
+  for (LocalIndex p = 0; p < model.points.size(); ++p)
+    if (model.element[p] == std::array<int, 3>{1, 1, 1}) return p;
+  return -1;
+}
+
+// The elements' gradient is exact for a linear velocity field on an affinely moved lattice: with
+// SPH's gradient exact too, the blend is the field's gradient, at interior, surface and corner
+// particles, and beside a loose particle (whose neighbours' nodes are fitted). With a mirror plane at
+// x = 0 and a field symmetric across it, the plane's nodes are the means of their particles and
+// images.
+TEST(SphElementGradient, LinearVelocityGivesItsGradient) {
+  Mat3 A;
+  A << 1.1, 0.2, 0.0, -0.1, 0.9, 0.05, 0.0, 0.1, 1.2;
+  Mat3 G;
+  G << 100.0, -30.0, 20.0, 50.0, -80.0, 10.0, -40.0, 60.0, 30.0;
+  Mat3 S = G;  // symmetric across x = 0: v_x odd in x, v_y and v_z even
+  S(0, 1) = S(0, 2) = S(1, 0) = S(2, 0) = 0.0;
+  MirrorBox plane;
+  plane.lo[0] = 0.0;
+  const Mat3 A_plane = Vec3(1.1, 0.9, 1.2).asDiagonal();
+  for (const bool mirrored : {false, true}) {
+    const Mat3& move = mirrored ? A_plane : A;
+    const Mat3& field = mirrored ? S : G;
+    Model model = movedBlock(move, mirrored ? Vec3(0.0, 1e-3, 2e-3) : Vec3(1e-3, -2e-3, 0.5e-3));
+    model.points.loose[insideParticle(model)] = 1;
+    const Mirrors mirrors = mirrored ? Mirrors(plane, 3e-3) : Mirrors();
+    std::vector<Vec3> v(model.points.x.size());
+    for (LocalIndex p = 0; p < model.points.size(); ++p)
+      v[p] = field * model.points.x[p] + Vec3(mirrored ? 0.0 : 1.0, 2.0, 3.0);
+    const Reconstruction reconstruction(model);
+    ElementGradient elements(0.5);
+    const std::vector<std::uint32_t> touches(model.points.x.size(), 0);
+    elements.update(model, reconstruction, mirrors, touches, 0);
+    elements.moveNodes(v, mirrors);
+    int taking = 0;
+    for (LocalIndex p = 0; p < model.points.size(); ++p) {
+      if (!elements.takesPart(p)) continue;
+      ++taking;
+      EXPECT_LT((elements.blend(p, field) - field).norm(), 1e-12 * field.norm()) << "particle " << p;
+    }
+    EXPECT_EQ(taking, 63) << (mirrored ? "with" : "without") << " the plane";  // all but the loose one
+  }
+}
+
+// The elements' forces are the adjoint of their gradient: for any velocities, their power is minus the
+// elements' share of the stress power, sum_p V_p dev(sigma_p) : (s dev L_e,p), and they sum to zero
+// (momentum is exact); and a particle at a contact takes no part.
+TEST(SphElementGradient, ForcesAreTheAdjointOfTheGradient) {
+  Mat3 A;
+  A << 1.05, 0.1, 0.0, -0.05, 0.95, 0.02, 0.03, 0.0, 1.1;
+  Model model = movedBlock(A, Vec3::Zero());
+  const LocalIndex inside = insideParticle(model);
+  model.points.loose[inside] = 1;
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  std::vector<Vec3> v(model.points.x.size());
+  for (LocalIndex p = 0; p < model.points.size(); ++p) {
+    v[p] = Vec3(uniform(random), uniform(random), uniform(random));
+    Mat3 t;
+    for (int k = 0; k < 9; ++k) t(k / 3, k % 3) = 1e8 * uniform(random);
+    model.points.stress[p] = t + t.transpose();
+  }
+  std::vector<std::uint32_t> touches(model.points.x.size(), 0);
+  touches[0] = 2;  // a corner particle touches body 1
+  const Reconstruction reconstruction(model);
+  const Mirrors mirrors;
+  ElementGradient elements(0.5);
+  elements.update(model, reconstruction, mirrors, touches, 0);
+  EXPECT_FALSE(elements.takesPart(0));
+  EXPECT_FALSE(elements.takesPart(inside));
+  elements.moveNodes(v, mirrors);
+  std::vector<Vec3> f(model.points.x.size(), Vec3::Zero());
+  elements.addForces(model.points, mirrors, f);
+  double stress_power = 0.0, force_power = 0.0, scale = 0.0;
+  Vec3 total = Vec3::Zero();
+  for (LocalIndex p = 0; p < model.points.size(); ++p) {
+    force_power += f[p].dot(v[p]);
+    total += f[p];
+    scale += f[p].norm() * v[p].norm();
+    if (!elements.takesPart(p)) continue;
+    const Mat3 sigma = model.points.stress[p];
+    const Mat3 deviator = sigma - sigma.trace() / 3.0 * Mat3::Identity();
+    stress_power += model.points.volume[p] * (deviator.cwiseProduct(elements.blend(p, Mat3::Zero()))).sum();
+  }
+  EXPECT_GT(scale, 0.0);
+  EXPECT_LT(std::abs(force_power + stress_power), 1e-12 * scale);
+  EXPECT_LT(total.norm(), 1e-12 * scale);
+  // SPH's pairs carry the rest of the stress: all of a particle's that takes no part.
+  EXPECT_EQ(elements.pairStress(0, model.points.stress[0]), model.points.stress[0]);
+  const Mat3 sigma = model.points.stress[inside + 1];
+  ASSERT_TRUE(elements.takesPart(inside + 1));
+  const Mat3 rest = elements.pairStress(inside + 1, sigma);
+  EXPECT_LT((rest - (sigma - 0.5 * (sigma - sigma.trace() / 3.0 * Mat3::Identity()))).norm(), 1e-6);
 }
 
 }  // namespace
