@@ -22,17 +22,20 @@ Mat3 deviator(const Mat3& t) {
 
 }  // namespace
 
-void ElementGradient::weigh(const Model& model, const Reconstruction& reconstruction, const Mirrors& mirrors) {
+void ElementGradient::weigh(const Model& model, const Reconstruction& reconstruction, const Mirrors& mirrors,
+                            const std::vector<std::uint8_t>& dirty) {
   const PointStore& points = model.points;
   const auto& node_elements = reconstruction.nodeElements();
   const auto& element_nodes = reconstruction.elementNodes();
   const std::vector<Vec3>& node_reference = reconstruction.nodeReference();
   const std::vector<Vec3>& particle_reference = reconstruction.particleReference();
   const auto nodes = static_cast<LocalIndex>(node_elements.size());
-  weights_.assign(static_cast<std::size_t>(nodes), {});
+  if (dirty.empty()) weights_.assign(static_cast<std::size_t>(nodes), {});
   const auto intact = [&](LocalIndex q) { return q >= 0 && intact_[static_cast<std::size_t>(q)] != 0; };
 #pragma omp parallel for schedule(dynamic, 256)
   for (LocalIndex a = 0; a < nodes; ++a) {
+    if (!dirty.empty() && !dirty[a]) continue;
+    weights_[a].clear();
     const Vec3& X = node_reference[a];
     LocalIndex any = -1;
     for (const LocalIndex q : node_elements[a]) any = q >= 0 ? q : any;
@@ -89,13 +92,26 @@ void ElementGradient::update(const Model& model, const Reconstruction& reconstru
   std::vector<std::uint8_t> intact(n);
   for (LocalIndex p = 0; p < points.size(); ++p)
     intact[p] = !points.unlinked(p) && !points.debris(p) && model.element[p][0] >= 0;
-  if (layout != layout_ || intact != intact_ || mirrors.count() != images_) {
+  const auto& element_nodes = reconstruction.elementNodes();
+  const auto& node_elements = reconstruction.nodeElements();
+  if (layout != layout_ || mirrors.count() != images_ || intact.size() != intact_.size()) {
     intact_ = std::move(intact);
     layout_ = layout;
     images_ = mirrors.count();
-    weigh(model, reconstruction, mirrors);
+    weigh(model, reconstruction, mirrors, {});
+  } else if (intact != intact_) {
+    // A particle's state enters the fits of the nodes of every element that shares a node with its own.
+    std::vector<std::uint8_t> dirty(weights_.size(), 0);
+    for (std::size_t r = 0; r < n; ++r) {
+      if (intact[r] == intact_[r] || element_nodes[r][0] < 0) continue;
+      for (const LocalIndex b : element_nodes[r])
+        for (const LocalIndex q : node_elements[b])
+          if (q >= 0)
+            for (const LocalIndex a : element_nodes[q]) dirty[a] = 1;
+    }
+    intact_ = std::move(intact);
+    weigh(model, reconstruction, mirrors, dirty);
   }
-  const auto& element_nodes = reconstruction.elementNodes();
   const auto nodes = static_cast<LocalIndex>(weights_.size());
   x_.resize(static_cast<std::size_t>(nodes));
 #pragma omp parallel for schedule(static)
@@ -143,16 +159,29 @@ Mat3 ElementGradient::pairStress(LocalIndex p, const Mat3& stress) const {
   return takesPart(p) ? Mat3(stress - share_ * deviator(stress)) : stress;
 }
 
-void ElementGradient::addForces(const PointStore& points, const Mirrors& mirrors, std::vector<Vec3>& f) {
+void ElementGradient::addForces(const PointStore& points, const Reconstruction& reconstruction, const Mirrors& mirrors,
+                                std::vector<Vec3>& f) {
   if (share_ <= 0.0) return;
   // Each node's force from the hexahedra that take part, -sum V s dev(sigma) grad N_a (the power of
   // the elements' share of the deviator is sum V s dev(sigma) : dev(L_e) = sum V s dev(sigma) : L_e),
-  // then from the nodes to the particles their weights move them by.
-  force_.assign(weights_.size(), Vec3::Zero());
-  for (LocalIndex p = 0; p < points.size(); ++p) {
-    if (!takesPart(p)) continue;
-    const Mat3 stress = share_ * points.volume[p] * deviator(points.stress[p]);
-    for (int c = 0; c < 8; ++c) force_[nodes_[p][c]].noalias() -= stress * corner_gradient_[p][c];
+  // summed by the node over its corners in order, then from the nodes to the particles their weights
+  // move them by.
+  const auto n = static_cast<std::size_t>(points.size());
+  stress_.resize(n);
+#pragma omp parallel for schedule(static)
+  for (LocalIndex p = 0; p < points.size(); ++p)
+    if (takesPart(p)) stress_[p] = share_ * points.volume[p] * deviator(points.stress[p]);
+  const auto& node_elements = reconstruction.nodeElements();
+  const auto nodes = static_cast<LocalIndex>(weights_.size());
+  force_.resize(weights_.size());
+#pragma omp parallel for schedule(static)
+  for (LocalIndex a = 0; a < nodes; ++a) {
+    Vec3 force = Vec3::Zero();
+    for (int c = 0; c < 8; ++c) {
+      const LocalIndex p = node_elements[a][c];  // a is corner c of p
+      if (p >= 0 && takesPart(p)) force.noalias() -= stress_[p] * corner_gradient_[p][c];
+    }
+    force_[a] = force;
   }
   for (std::size_t a = 0; a < weights_.size(); ++a)
     for (const Weight& w : weights_[a]) f[w.particle] += w.weight * mirrors.vector(force_[a], w.image);

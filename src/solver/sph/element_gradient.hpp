@@ -17,8 +17,9 @@
 //   - any other node: the weighted least-squares linear fit, at the node's reference place, of the
 //     intact particles of its elements and of their neighbours (weights exp(-|X - X_a|^2 / delta^2)
 //     at reference places X, delta the lattice cell).
-// The weights depend on the reference lattice and on which particles are intact: they are rebuilt
-// when that changes.
+// The weights depend on the reference lattice and on which particles are intact: those of the nodes
+// within reach of a particle whose state changed are rebuilt (all, when the store's layout or the
+// mirrors' images change).
 #include "solver/common/mirror.hpp"
 #include "solver/sph/model.hpp"
 #include "solver/sph/reconstruction.hpp"
@@ -51,7 +52,8 @@ class ElementGradient {
   // The stress SPH's pairs carry for particle p: all but the elements' share of the deviator.
   Mat3 pairStress(LocalIndex p, const Mat3& stress) const;
   // Adds the elements' forces on the particles to f, N (by the nodes, in a fixed order).
-  void addForces(const PointStore& points, const Mirrors& mirrors, std::vector<Vec3>& f);
+  void addForces(const PointStore& points, const Reconstruction& reconstruction, const Mirrors& mirrors,
+                 std::vector<Vec3>& f);
 
  private:
   struct Weight {
@@ -59,11 +61,14 @@ class ElementGradient {
     std::uint8_t image;  // a code of the mirrors (0: the particle itself)
     double weight;
   };
-  void weigh(const Model& model, const Reconstruction& reconstruction, const Mirrors& mirrors);
+  // The weights of the nodes marked in `dirty` (all when it is empty).
+  void weigh(const Model& model, const Reconstruction& reconstruction, const Mirrors& mirrors,
+             const std::vector<std::uint8_t>& dirty);
 
   double share_;
   std::vector<std::vector<Weight>> weights_;  // per node
   std::vector<Vec3> x_, v_, force_;           // per node
+  std::vector<Mat3> stress_;                  // per particle: s V dev(sigma) (addForces)
   std::vector<std::array<Vec3, 8>> corner_gradient_;
   std::vector<std::array<LocalIndex, 8>> nodes_;
   std::vector<std::uint8_t> active_, intact_;

@@ -512,7 +512,7 @@ void Integrator::forces() {
   // thread count, and on every rank for the particles it owns).
   if (elements_.share() > 0.0) {
     element_force_.assign(n, Vec3::Zero());
-    elements_.addForces(points, mirrors, element_force_);
+    elements_.addForces(points, reconstruction_, mirrors, element_force_);
     for (LocalIndex p = 0; p < points.owned; ++p) acceleration_[p] += element_force_[p] / points.mass[p];
   }
   // A ghost's sums lack the pairs this rank does not hold (the kick and the heating read them).

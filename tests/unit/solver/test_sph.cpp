@@ -728,7 +728,7 @@ TEST(SphElementGradient, ForcesAreTheAdjointOfTheGradient) {
   EXPECT_FALSE(elements.takesPart(inside));
   elements.moveNodes(v, mirrors);
   std::vector<Vec3> f(model.points.x.size(), Vec3::Zero());
-  elements.addForces(model.points, mirrors, f);
+  elements.addForces(model.points, reconstruction, mirrors, f);
   double stress_power = 0.0, force_power = 0.0, scale = 0.0;
   Vec3 total = Vec3::Zero();
   for (LocalIndex p = 0; p < model.points.size(); ++p) {
