@@ -127,9 +127,12 @@ void ElementGradient::update(const Model& model, const Reconstruction& reconstru
     if (!intact_[p] || touches[p] != 0) continue;
     const std::array<LocalIndex, 8>& corners = element_nodes[p];
     if (std::any_of(corners.begin(), corners.end(), [&](LocalIndex a) { return weights_[a].empty(); })) continue;
+    std::array<Vec3, 8> x;
+    for (int c = 0; c < 8; ++c) x[c] = x_[corners[c]];
+    // (A hexahedron distorted as far as the reconstruction fails its element: SPH's gradient alone.)
+    if (!(elementQuality(x) >= min_quality_)) continue;
     Mat3 J = Mat3::Zero();  // dx / dxi at the centre
-    for (int c = 0; c < 8; ++c) J.noalias() += x_[corners[c]] * cornerSlope(c).transpose();
-    if (!(J.determinant() > 0.0)) continue;  // (inverted: SPH's gradient alone)
+    for (int c = 0; c < 8; ++c) J.noalias() += x[c] * cornerSlope(c).transpose();
     const Mat3 inverse_t = J.inverse().transpose();
     for (int c = 0; c < 8; ++c) corner_gradient_[p][c] = inverse_t * cornerSlope(c);
     nodes_[p] = corners;

@@ -33,7 +33,8 @@ namespace kessler::sph {
 
 class ElementGradient {
  public:
-  explicit ElementGradient(double share) : share_(share) {}
+  // `min_quality`: a hexahedron below it (elementQuality) takes no part.
+  ElementGradient(double share, double min_quality) : share_(share), min_quality_(min_quality) {}
   double share() const { return share_; }
   // The nodes' weights are rebuilt at the next update (the reconstruction's nodes were renumbered).
   void renumbered() { layout_ = -1; }
@@ -65,7 +66,7 @@ class ElementGradient {
   void weigh(const Model& model, const Reconstruction& reconstruction, const Mirrors& mirrors,
              const std::vector<std::uint8_t>& dirty);
 
-  double share_;
+  double share_, min_quality_;
   std::vector<std::vector<Weight>> weights_;  // per node
   std::vector<Vec3> x_, v_, force_;           // per node
   std::vector<Mat3> stress_;                  // per particle: s V dev(sigma) (addForces)

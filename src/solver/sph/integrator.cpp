@@ -46,7 +46,7 @@ Integrator::Integrator(Model& model, const Settings& settings, Distribution* dis
       settings_(settings),
       distribution_(distribution),
       reconstruction_(model),
-      elements_(settings.sph.element_share),
+      elements_(settings.sph.element_share, settings.sph.element_min_quality),
       erosion_(settings.solver.erosion_radius),
       release_(settings.solver.erosion_radius) {
   KESSLER_VERIFY(settings.solver.cfl > 0.0 && settings.solver.cfl <= 1.0, "cfl must lie in (0, 1], got {}",

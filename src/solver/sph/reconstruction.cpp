@@ -8,6 +8,27 @@
 
 namespace kessler::sph {
 
+double elementQuality(const std::array<Vec3, 8>& x) {
+  // The twelve edges, each pointing along +x, +y, +z of the reference cube (edge[d][c] from corner
+  // c, whose bit d is clear, to its neighbour along d), and their lengths: each corner meets three.
+  std::array<std::array<Vec3, 8>, 3> edge;
+  std::array<std::array<double, 8>, 3> length;
+  for (int d = 0; d < 3; ++d)
+    for (int c = 0; c < 8; ++c)
+      if (!((c >> d) & 1)) {
+        edge[d][c] = x[c | (1 << d)] - x[c];
+        length[d][c] = edge[d][c].norm();
+      }
+  double quality = std::numeric_limits<double>::infinity();
+  for (int c = 0; c < 8; ++c) {
+    Mat3 edges;
+    for (int d = 0; d < 3; ++d) edges.col(d) = edge[d][c & ~(1 << d)];
+    const double lengths = length[0][c & ~1] * length[1][c & ~2] * length[2][c & ~4];
+    quality = std::min(quality, lengths > 0.0 ? edges.determinant() / lengths : -1.0);
+  }
+  return quality;
+}
+
 Reconstruction::Reconstruction(const Model& model) {
   const PointStore& points = model.points;
   const auto n = static_cast<std::size_t>(points.size());
@@ -97,23 +118,9 @@ LocalIndex Reconstruction::failDistorted(Model& model, double min_quality, const
       quality_[p] = std::numeric_limits<double>::quiet_NaN();
       continue;
     }
-    // The twelve edges, each pointing along +x, +y, +z of the reference cube (edge[d][c] from corner
-    // c, whose bit d is clear, to its neighbour along d), and their lengths: each corner meets three.
-    std::array<std::array<Vec3, 8>, 3> edge;
-    std::array<std::array<double, 8>, 3> length;
-    for (int d = 0; d < 3; ++d)
-      for (int c = 0; c < 8; ++c)
-        if (!((c >> d) & 1)) {
-          edge[d][c] = x_[nodes[c | (1 << d)]] - x_[nodes[c]];
-          length[d][c] = edge[d][c].norm();
-        }
-    double quality = std::numeric_limits<double>::infinity();
-    for (int c = 0; c < 8; ++c) {
-      Mat3 edges;
-      for (int d = 0; d < 3; ++d) edges.col(d) = edge[d][c & ~(1 << d)];
-      const double lengths = length[0][c & ~1] * length[1][c & ~2] * length[2][c & ~4];
-      quality = std::min(quality, lengths > 0.0 ? edges.determinant() / lengths : -1.0);
-    }
+    std::array<Vec3, 8> corners;
+    for (int c = 0; c < 8; ++c) corners[c] = x_[nodes[c]];
+    const double quality = elementQuality(corners);
     quality_[p] = quality;
     fail[p] = !(quality >= min_quality);
   }

@@ -25,6 +25,11 @@
 
 namespace kessler::sph {
 
+// A hexahedron's quality from its corners' places (by corner: bit 0 +x, 1 +y, 2 +z): the smallest, over
+// its corners, of the scaled Jacobian, det of the corner's three edges over the product of their
+// lengths (1 for a cube, the sine of the corner's angle under shear, negative when inverted).
+double elementQuality(const std::array<Vec3, 8>& x);
+
 class Reconstruction {
  public:
   // The nodes of every lattice body's elements (Model::lattices, Model::element).

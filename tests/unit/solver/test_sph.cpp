@@ -563,15 +563,15 @@ TEST(Sph, RefusesAThinBody) {
 namespace kessler::sph {
 namespace {
 
-// A 3 x 3 x 3 lattice block (1 mm elements), as SPH's setup builds it.
-Model latticeBlock() {
+// An n x n x n lattice block (1 mm elements) from the origin, as SPH's setup builds it.
+Model latticeBlock(int n = 3) {
   Problem problem;
   problem.method = "sph";
   problem.settings.solver.end_time = 1e-6;
   BodySetup block;
   block.name = "block";
   block.material = testing::aluminium();
-  block.mesh = geometry::StructuredBox{geometry::Box{Vec3::Zero(), Vec3(3e-3, 3e-3, 3e-3)}, {3, 3, 3}};
+  block.mesh = geometry::StructuredBox{geometry::Box{Vec3::Zero(), Vec3::Constant(n * 1e-3)}, {n, n, n}};
   problem.bodies = {block};
   return buildModel(problem);
 }
@@ -636,17 +636,9 @@ TEST(SphReconstruction, ShearedElementsFailTheirMaterialDoesNot) {
   EXPECT_EQ(r.failDistorted(model, 0.2), 0);
 }
 
-// A 4 x 4 x 4 lattice block (1 mm elements) from x = 0, moved by x = A X + c.
+// A 4 x 4 x 4 lattice block moved by x = A X + c.
 Model movedBlock(const Mat3& A, const Vec3& c) {
-  Problem problem;
-  problem.method = "sph";
-  problem.settings.solver.end_time = 1e-6;
-  BodySetup block;
-  block.name = "block";
-  block.material = testing::aluminium();
-  block.mesh = geometry::StructuredBox{geometry::Box{Vec3::Zero(), Vec3(4e-3, 4e-3, 4e-3)}, {4, 4, 4}};
-  problem.bodies = {block};
-  Model model = buildModel(problem);
+  Model model = latticeBlock(4);
   for (LocalIndex p = 0; p < model.points.size(); ++p) {
     model.points.x[p] = A * model.points.x[p] + c;
     model.points.F[p] = A;
@@ -686,7 +678,7 @@ TEST(SphElementGradient, LinearVelocityGivesItsGradient) {
     for (LocalIndex p = 0; p < model.points.size(); ++p)
       v[p] = field * model.points.x[p] + Vec3(mirrored ? 0.0 : 1.0, 2.0, 3.0);
     const Reconstruction reconstruction(model);
-    ElementGradient elements(0.5);
+    ElementGradient elements(0.5, 0.2);
     const std::vector<std::uint32_t> touches(model.points.x.size(), 0);
     elements.update(model, reconstruction, mirrors, touches, 0);
     elements.moveNodes(v, mirrors);
@@ -722,7 +714,7 @@ TEST(SphElementGradient, ForcesAreTheAdjointOfTheGradient) {
   touches[0] = 2;  // a corner particle touches body 1
   const Reconstruction reconstruction(model);
   const Mirrors mirrors;
-  ElementGradient elements(0.5);
+  ElementGradient elements(0.5, 0.2);
   elements.update(model, reconstruction, mirrors, touches, 0);
   EXPECT_FALSE(elements.takesPart(0));
   EXPECT_FALSE(elements.takesPart(inside));
