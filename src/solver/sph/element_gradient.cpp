@@ -133,6 +133,7 @@ void ElementGradient::update(const Model& model, const Reconstruction& reconstru
     if (!(elementQuality(x) >= min_quality_)) continue;
     Mat3 J = Mat3::Zero();  // dx / dxi at the centre
     for (int c = 0; c < 8; ++c) J.noalias() += x[c] * cornerSlope(c).transpose();
+    if (!(J.determinant() > 0.0)) continue;  // (inverted at the centre: SPH's gradient alone)
     const Mat3 inverse_t = J.inverse().transpose();
     for (int c = 0; c < 8; ++c) corner_gradient_[p][c] = inverse_t * cornerSlope(c);
     nodes_[p] = corners;
