@@ -10,7 +10,9 @@
 // the stress through SPH's pairs, so that momentum is exact and the forces' power is the stress
 // power. A hexahedron meets the divergence theorem node by node, so a surface's tractions reach the
 // particles that carry them, where SPH's pairs are one-sided; the pressure stays SPH's alone (a gas
-// has no shear stiffness to hold a hexahedron's zero-energy modes).
+// has no shear stiffness to hold a hexahedron's zero-energy modes). A hexahedron takes no part when
+// its corners have closed below the reconstruction's distortion threshold (elementQuality), or a
+// node of it cannot be placed; its particle then takes SPH's gradient alone.
 //
 // Each node moves with a fixed linear combination of its particles, exact for any affine motion:
 //   - a node whose eight elements are intact, counting images across mirror planes: their mean;
