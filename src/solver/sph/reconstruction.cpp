@@ -136,19 +136,8 @@ LocalIndex Reconstruction::failDistorted(Model& model, double min_quality, const
 }
 
 std::vector<double> Reconstruction::latticeReach(const Model& model, const Share& share) const {
-  const PointStore& points = model.points;
-  std::vector<double> reach(static_cast<std::size_t>(points.owned), 0.0);
-#pragma omp parallel for schedule(static)
-  for (LocalIndex p = 0; p < points.owned; ++p) {
-    if (element_nodes_[p][0] < 0 || points.unlinked(p) || !share.own(p)) continue;
-    double farthest = 0.0;
-    for (const LocalIndex node : element_nodes_[p])
-      for (const LocalIndex q : node_elements_[node])
-        if (q >= 0 && q != p && !points.unlinked(q))
-          farthest = std::max(farthest, (points.x[q] - points.x[p]).squaredNorm());
-    reach[p] = std::sqrt(farthest);
-  }
-  return reach;
+  // (One ring beyond none: the farthest intact particle whose element shares a node with its own.)
+  return extendReach(model, std::vector<double>(static_cast<std::size_t>(model.points.owned), 0.0), share);
 }
 
 std::vector<double> Reconstruction::extendReach(const Model& model, const std::vector<double>& reach,
