@@ -91,6 +91,11 @@ struct SphOptions {
   double viscosity_min = 0.1;
   double viscosity_ratio = 2.0;
   double viscosity_decay = 0.2;
+  // The artificial heat flux's coefficient alpha_u (Price, J. Comput. Phys. 227:10040, 2008; 1 as
+  // there), over the pairs the viscosity acts on, at their closing speed (Noh, J. Comput. Phys.
+  // 72:78, 1987: a contact's or a shock's start heats its first particles too much, and the flux
+  // spreads that heat to their neighbours); 0: none.
+  double heat_conduction = 1.0;
   // Monaghan's artificial stress against the tensile instability (Gray, Monaghan & Swift, CMAME
   // 190:6641, 2001): epsilon and the exponent n of f = W(r) / W(spacing).
   double artificial_stress = 0.3;

@@ -352,7 +352,7 @@ void Integrator::forces() {
   const Mat3 zero = Mat3::Zero();
   const auto n = static_cast<std::size_t>(points.owned);
   acceleration_.resize(n);
-  viscous_power_.resize(n);
+  heating_.resize(n);
   artificial_force_.resize(n);
   signal_.resize(n);
   // Per particle, what a pair reads of either end, in one record (a pair's other end is near in
@@ -375,6 +375,7 @@ void Integrator::forces() {
     end.alpha = model_.viscosity[p];
     end.h = h_[p];
     end.spacing = spacing_[p];
+    end.energy = points.energy[p];
     end.body = points.body[p];
     end.broken = points.broken[p];
     end.tensile = 0;
@@ -401,7 +402,8 @@ void Integrator::forces() {
     }
   }
   // Each pair's force on its listing particle i, once: that on its other end j is -R times it (the
-  // image of the reaction). The viscosity's heating and signal speed are the same at both ends. Each
+  // image of the reaction). The viscosity's heating and signal speed are the same at both ends, the
+  // heat flux's opposite. Each
   // particle's sums run over the pairs it lists, then over those that list it, in their order (a
   // ghost's are its owner's, refreshed below). The pairs that list i are those of lower particles, so
   // a thread that goes up its block of particles has them all at hand, just computed (still in cache),
@@ -413,11 +415,11 @@ void Integrator::forces() {
     for (Index k = pairs_.listed_offset[i]; k < pairs_.listed_offset[i + 1]; ++k) {
       const PairShare& share = pair_share_[pairs_.listed_by[k]];
       f -= mirrors.vector(share.force, pairs_.listed_mirror[k]);
-      power += share.power;
+      power += share.power - share.heat;
       signal = std::max(signal, share.signal);
     }
     acceleration_[i] = f / points.mass[i];
-    viscous_power_[i] = power;
+    heating_[i] = power;
     signal_[i] = signal;
   };
 #pragma omp parallel
@@ -468,7 +470,7 @@ void Integrator::forces() {
           }
         }
         PairShare& share = pair_share_[e];
-        share.power = share.signal = 0.0;
+        share.power = share.signal = share.heat = 0.0;
         const Vec3 v = a.v - mirrors.vector(b.v, m);
         const double approach = v.dot(d);
         if (approach < 0.0 && pair.active) {
@@ -481,10 +483,13 @@ void Integrator::forces() {
           f.noalias() -= mm * viscosity * grad;
           share.power = 0.5 * mm * viscosity * v.dot(grad);
           share.signal = -mu;
+          // The heat flux (docs/theory.md §10): alpha_u m_i m_j |v . r^| (u_i - u_j) / rho dW/dr into
+          // i, down the specific internal energy's difference, and as much out of j.
+          share.heat = -o.heat_conduction * approach * pair.slope * (a.energy - b.energy) * mm / rho;
         }
         share.force = f;
         force += f;
-        power += share.power;
+        power += share.power + share.heat;
         signal = std::max(signal, share.signal);
       }
       artificial_force_[i] = artificial_force;
@@ -493,13 +498,13 @@ void Integrator::forces() {
         sumListed(i, force, power, signal);
       } else {  // (kept for after the barrier)
         acceleration_[i] = force;
-        viscous_power_[i] = power;
+        heating_[i] = power;
         signal_[i] = signal;
       }
     }
 #pragma omp barrier
     for (LocalIndex i = begin; i < end; ++i)
-      if (own.own(i) && !listedHere(i)) sumListed(i, acceleration_[i], viscous_power_[i], signal_[i]);
+      if (own.own(i) && !listedHere(i)) sumListed(i, acceleration_[i], heating_[i], signal_[i]);
   }
   // The artificial forces' reactions on the other ends, in the order of the listing particles (the
   // same for any thread count): the kick books their work (step()).
@@ -518,7 +523,7 @@ void Integrator::forces() {
   // A ghost's sums lack the pairs this rank does not hold (the kick and the heating read them).
   if (distribution_) {
     distribution_->refresh(acceleration_);
-    distribution_->refresh(viscous_power_);
+    distribution_->refresh(heating_);
   }
 }
 
@@ -627,7 +632,7 @@ void Integrator::updateMaterials(double dt) {
   PointStore& points = model_.points;
   if (dt > 0.0) {
     heat_.resize(static_cast<std::size_t>(points.owned));
-    for (LocalIndex p = 0; p < points.owned; ++p) heat_[p] = viscous_power_[p] * dt;
+    for (LocalIndex p = 0; p < points.owned; ++p) heat_[p] = heating_[p] * dt;
     heatBodies(model_, body_points_, heat_);
     // The laws heat no debris (it has no thermal update): its share is kept as internal energy, so
     // that a debris cloud's collisions conserve energy.

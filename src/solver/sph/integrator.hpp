@@ -116,12 +116,12 @@ class Integrator {
   Eigenerosion erosion_;
   DebrisRelease release_;
   std::vector<IndexRange> body_points_;
-  std::vector<double> h_;              // smoothing lengths at the last search
-  std::vector<double> spacing_;        // and spacings
-  std::vector<Mat3> correction_;       // B_i: the inverse of sum_j V_j (x_j - x_i) (x) grad_i W_ij
-  std::vector<Vec3> acceleration_;     // of the last forces
-  std::vector<Vec3> element_force_;    // the elements' share of them, N (forces())
-  std::vector<double> viscous_power_;  // the viscosity's heating of each particle, W
+  std::vector<double> h_;            // smoothing lengths at the last search
+  std::vector<double> spacing_;      // and spacings
+  std::vector<Mat3> correction_;     // B_i: the inverse of sum_j V_j (x_j - x_i) (x) grad_i W_ij
+  std::vector<Vec3> acceleration_;   // of the last forces
+  std::vector<Vec3> element_force_;  // the elements' share of them, N (forces())
+  std::vector<double> heating_;      // the viscosity's heat and the heat flux into each particle, W
   // The artificial stress's share of each particle's last forces, N (forces()), and its work over the
   // kick of each particle, J (step()).
   std::vector<Vec3> artificial_force_;
@@ -137,13 +137,14 @@ class Integrator {
   struct PairShare {
     Vec3 force;
     double power, signal;
+    double heat;  // the heat flux's power into the listing particle (its other end takes -heat)
   };
   std::vector<PairShare> pair_share_;
   // Per particle (forces()): what a pair reads of either end, packed.
   struct PairEnd {
     Mat3 stress_b;  // sigma B^T
     Vec3 x, v;
-    double volume, mass, density, sound, alpha, h, spacing;
+    double volume, mass, density, sound, alpha, h, spacing, energy;
     int body;
     std::uint8_t broken, tensile;
   };
