@@ -403,11 +403,11 @@ void Integrator::forces() {
   }
   // Each pair's force on its listing particle i, once: that on its other end j is -R times it (the
   // image of the reaction). The viscosity's heating and signal speed are the same at both ends, the
-  // heat flux's opposite. Each
-  // particle's sums run over the pairs it lists, then over those that list it, in their order (a
-  // ghost's are its owner's, refreshed below). The pairs that list i are those of lower particles, so
-  // a thread that goes up its block of particles has them all at hand, just computed (still in cache),
-  // once it has computed i's own: but for those a lower block lists, summed after the barrier.
+  // heat flux's opposite. Each particle's sums run over the pairs it lists, then over those that list
+  // it, in their order (a ghost's are its owner's, refreshed below). The pairs that list i are those
+  // of lower particles, so a thread that goes up its block of particles has them all at hand, just
+  // computed (still in cache), once it has computed i's own: but for those a lower block lists,
+  // summed after the barrier.
   const auto pairs = static_cast<std::size_t>(pairs_.size());
   pair_share_.resize(pairs);
   const Share own = share();
