@@ -13,6 +13,7 @@
 #include "solver/sph/pairs.hpp"
 #include "solver/sph/setup.hpp"
 #include "solver/sph/sph_method.hpp"
+#include "sph_problem.hpp"
 
 #include <gtest/gtest.h>
 #include <omp.h>
@@ -479,15 +480,15 @@ TEST(Sph, TheArtificialStressWorkIsBooked) {
 // compression, which the hot half's pressure makes about 1e-5.)
 TEST(Sph, TheHeatFluxCarriesHeatDownItsDifferenceAndOnlyMovesIt) {
   const auto run = [](double conduction) {
-    Problem problem = quiet(1e-3);
-    problem.settings.sph.heat_conduction = conduction;
-    BodySetup body;
-    body.name = "block";
     const auto parameters = library::find("Al6061-T6").parameters;
-    body.material = std::make_shared<ImpactMaterial>("al", parameters);
-    body.mesh = geometry::MeshRequest{geometry::Box{Vec3::Zero(), Vec3(6e-3, 4e-3, 4e-3)}, 0.5e-3};
-    body.velocity_field = [](const Vec3& x) { return Vec3(-1e3 * (x - Vec3(3e-3, 2e-3, 2e-3))); };
-    problem.bodies = {body};
+    Problem problem =
+        testing::oneBody("block", std::make_shared<ImpactMaterial>("al", parameters),
+                         geometry::MeshRequest{geometry::Box{Vec3::Zero(), Vec3(6e-3, 4e-3, 4e-3)}, 0.5e-3}, 1e-3,
+                         [](const Vec3& x) { return Vec3(-1e3 * (x - Vec3(3e-3, 2e-3, 2e-3))); });
+    // (No viscosity, whose heat would mix with the flux's.)
+    problem.settings.sph.viscosity_max = problem.settings.sph.viscosity_min = 0.0;
+    problem.settings.sph.artificial_stress = 0.0;
+    problem.settings.sph.heat_conduction = conduction;
     Model model = buildModel(problem);
     const double extra = 2e3;
     for (LocalIndex p = 0; p < model.points.size(); ++p)
@@ -580,14 +581,9 @@ TEST(Sph, TheArtificialStressHoldsAStretchedColumnTogether) {
 }
 
 TEST(Sph, RefusesAThinBody) {
-  Problem problem;
-  problem.method = "sph";
-  problem.settings.solver.end_time = 1e-6;
-  BodySetup plate;
-  plate.name = "plate";
-  plate.material = testing::aluminium();
-  plate.mesh = geometry::MeshRequest{geometry::Box{Vec3::Zero(), Vec3(10e-3, 10e-3, 0.8e-3)}, 0.5e-3};
-  problem.bodies = {plate};
+  const Problem problem =
+      testing::oneBody("plate", testing::aluminium(),
+                       geometry::MeshRequest{geometry::Box{Vec3::Zero(), Vec3(10e-3, 10e-3, 0.8e-3)}, 0.5e-3}, 1e-6);
   try {
     makeMethod(problem);
     FAIL() << "a plate thinner than two particles was accepted";

@@ -8,6 +8,7 @@
 #include "solver/sph/element_gradient.hpp"
 #include "solver/sph/reconstruction.hpp"
 #include "solver/sph/setup.hpp"
+#include "sph_problem.hpp"
 
 #include <gtest/gtest.h>
 
@@ -22,15 +23,9 @@ namespace {
 
 // An n x n x n lattice block (1 mm elements) from the origin, as SPH's setup builds it.
 Model latticeBlock(int n = 3) {
-  Problem problem;
-  problem.method = "sph";
-  problem.settings.solver.end_time = 1e-6;
-  BodySetup block;
-  block.name = "block";
-  block.material = testing::aluminium();
-  block.mesh = geometry::StructuredBox{geometry::Box{Vec3::Zero(), Vec3::Constant(n * 1e-3)}, {n, n, n}};
-  problem.bodies = {block};
-  return buildModel(problem);
+  return buildModel(testing::oneBody(
+      "block", testing::aluminium(),
+      geometry::StructuredBox{geometry::Box{Vec3::Zero(), Vec3::Constant(n * 1e-3)}, {n, n, n}}, 1e-6));
 }
 
 // Under any affine motion x = A X + c the reconstructed nodes are the affine images of the lattice's
