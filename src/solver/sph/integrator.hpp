@@ -6,13 +6,16 @@
 //      kernel gradient (an intact lattice particle away from a contact takes half of its deviator
 //      from its reconstructed hexahedron: element_gradient.hpp), dF = (I - dt L/2)^-1 (I + dt L/2),
 //      and the drift x += dt v;
-//   3. the material update (the shared laws, from F, dF and the volume), heated by the viscosity;
+//   3. the material update (the shared laws, from F, dF and the volume), heated by the viscosity and
+//      the heat flux;
 //   4. eigenerosion and the release of failed particles as debris (solver/common/);
-//   5. pairs at the new positions, the kernel correction, the forces, the stable step.
+//   5. pairs at the new positions, the kernel correction, the forces (pair_passes.cpp), the stable
+//      step.
 // The internal forces are those whose power is the stress power of the deformation of step 2,
 // f_i = sum_j V_i V_j (sigma_i B_i^T + sigma_j B_j^T) grad_i W_ij (sigma less the hexahedra's share
 // of its deviator, which acts through their nodes), so linear momentum is exact and the work of the
-// forces is what the material books; Monaghan's viscosity and artificial stress are added pairwise.
+// forces is what the material books; Monaghan's viscosity and artificial stress, and an artificial
+// heat flux (Price, J. Comput. Phys. 227:10040, 2008), are added pairwise.
 #include "core/timer.hpp"
 #include "solver/common/eigenerosion.hpp"
 #include "solver/common/energies.hpp"
