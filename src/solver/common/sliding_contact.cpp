@@ -221,6 +221,7 @@ SlidingReport SlidingContact::apply(const ContactSurface& surface, const Sliding
           }
         }
         ++report.face_contacts;
+        report.met.emplace_back(s, c.body[v[0]]);
         if (!report.touching.empty()) {
           const auto mine = static_cast<std::size_t>(c.body[s]);
           report.touching[mine] |= std::uint64_t{1} << c.body[v[0]];
@@ -270,6 +271,7 @@ SlidingReport SlidingContact::apply(const ContactSurface& surface, const Sliding
       c.v[s] += freePart((mean - vs) * normal, c.constrained[s]);
       c.v[m] += freePart((mean - vm) * normal, c.constrained[m]);
       ++report.edge_contacts;
+      report.met.emplace_back(s, c.body[m]);
       if (!report.touching.empty())
         report.touching[static_cast<std::size_t>(c.body[s])] |= std::uint64_t{1} << c.body[m];
     }

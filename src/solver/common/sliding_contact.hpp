@@ -29,6 +29,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace kessler {
@@ -60,6 +61,8 @@ struct SlidingReport {
   long edge_contacts = 0;               // normal velocities exchanged at an edge or vertex
   double deepest_remaining = 0.0;       // after the last visit: the deepest slave below a master triangle, m
   std::vector<std::uint64_t> touching;  // per body: bit b set if it met body b (bodies <= 64)
+  // Each contact, in the order made: the slave and the body it met (a debris slave strikes it).
+  std::vector<std::pair<LocalIndex, std::int32_t>> met;
 };
 
 class SlidingContact {

@@ -323,6 +323,9 @@ void Integrator::slide(double dt, double dt_kick) {
                                    points.body, model_.constrained, gap_};
     const SlidingReport report = contact_.apply(surface_, carriers, model_.bodies.size());
     for (std::size_t b = 0; b < touching.size(); ++b) touching[b] |= report.touching[b];
+    // A debris particle that met a body struck it (the rear-wall analysis counts those).
+    for (const auto& [k, body] : report.met)
+      if (points.debris(k)) model_.points.strike(k, body);
     double total = 0.0;
     std::vector<LocalIndex> moved;
     for (const LocalIndex k : active) {

@@ -51,7 +51,8 @@ TEST(Rkpm, LatticeSurfaceClosesOverTheBoundaryParticles) {
 
 // Debris strikes a body as matter: a block of debris (every particle released) falling at 400 m/s onto
 // a free block stops on its surface (unmet, its lowest particles would be 1.7 mm down, inside the
-// block, at the end), and the momentum the contact exchanges is kept to round-off.
+// block, at the end), the momentum the contact exchanges is kept to round-off, and the debris that
+// met the block is recorded as having struck it.
 TEST(Rkpm, DebrisStrikesABodyAsMatter) {
   Problem problem = latticeBlock();  // 5 x 4 x 3 elements of 1 mm, z in [0, 3 mm]
   BodySetup debris = problem.bodies[0];
@@ -89,6 +90,14 @@ TEST(Rkpm, DebrisStrikesABodyAsMatter) {
   EXPECT_GT(speed / mass, -200.0);  // slowed, not passed through
   const Vec3 after = method->energies().momentum;
   EXPECT_LT((after - before).norm(), 1e-12 * before.norm());
+  // The debris' lowest layer (3 x 2 particles) struck the block: the rear-wall analysis counts the
+  // debris whose last strike was on the wall (PointStore::lastStruck).
+  std::vector<std::pair<double, LocalIndex>> layer;
+  for (LocalIndex p = 0; p < points.owned; ++p)
+    if (points.body[p] == 1) layer.emplace_back(points.x[p].z(), p);
+  std::sort(layer.begin(), layer.end());
+  ASSERT_EQ(layer.size(), 12u);
+  for (std::size_t k = 0; k < 6; ++k) EXPECT_EQ(points.lastStruck(layer[k].second), 0) << "particle " << layer[k].second;
 }
 
 // With a particle of its top layer gone (released as debris), the surface closes over the particle
