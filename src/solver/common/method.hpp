@@ -42,6 +42,20 @@ struct Clock {
   }
 };
 
+// A clock in a checkpoint, as `<prefix>time`, `<prefix>steps`, `<prefix>dt_last`, `<prefix>dt_next` and
+// `<prefix>dt_initial` (SPH's "sph_", RKPM's "rkpm_").
+inline void saveClock(StateWriter& out, const std::string& prefix, const Clock& c) {
+  out.scalar(prefix + "time", c.time);
+  out.scalar(prefix + "dt_last", c.dt_last);
+  out.scalar(prefix + "dt_next", c.dt_next);
+  out.scalar(prefix + "dt_initial", c.dt_initial);
+  out.scalar(prefix + "steps", static_cast<std::int64_t>(c.steps));
+}
+inline Clock loadClock(const StateReader& in, const std::string& prefix) {
+  return {in.doubleScalar(prefix + "time"), in.intScalar(prefix + "steps"), in.doubleScalar(prefix + "dt_last"),
+          in.doubleScalar(prefix + "dt_next"), in.doubleScalar(prefix + "dt_initial")};
+}
+
 class Method {
  public:
   virtual ~Method() = default;

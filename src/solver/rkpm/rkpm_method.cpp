@@ -61,12 +61,7 @@ NodeCloud RkpmMethod::nodes() const {
 }
 
 void RkpmMethod::save(StateWriter& out) const {
-  const Clock c = integrator_.clock();
-  out.scalar("rkpm_time", c.time);
-  out.scalar("rkpm_dt_last", c.dt_last);
-  out.scalar("rkpm_dt_next", c.dt_next);
-  out.scalar("rkpm_dt_initial", c.dt_initial);
-  out.scalar("rkpm_steps", static_cast<std::int64_t>(c.steps));
+  saveClock(out, "rkpm_", integrator_.clock());
   out.scalar("rkpm_contact_energy", integrator_.contactEnergy());
   out.group("/rkpm");
   out.array("/rkpm/constrained", model_.constrained);
@@ -167,8 +162,7 @@ void RkpmMethod::load(const StateReader& in) {
     in.array("/rkpm/kernel_update_energy", energy, 1);
     updates = {counts[0], counts[1], counts[2], energy[0]};
   }
-  integrator_.restore(Clock{in.doubleScalar("rkpm_time"), in.intScalar("rkpm_steps"), in.doubleScalar("rkpm_dt_last"),
-                            in.doubleScalar("rkpm_dt_next"), in.doubleScalar("rkpm_dt_initial")},
+  integrator_.restore(loadClock(in, "rkpm_"),
                       in.doubleScalar("rkpm_contact_energy"), updates);
 }
 

@@ -128,12 +128,7 @@ std::vector<std::string> SphMethod::notes() const {
 }
 
 void SphMethod::save(StateWriter& out) const {
-  const Clock c = integrator_.clock();
-  out.scalar("sph_time", c.time);
-  out.scalar("sph_dt_last", c.dt_last);
-  out.scalar("sph_dt_next", c.dt_next);
-  out.scalar("sph_dt_initial", c.dt_initial);
-  out.scalar("sph_steps", static_cast<std::int64_t>(c.steps));
+  saveClock(out, "sph_", integrator_.clock());
   out.group("/sph");
   out.array("/sph/constrained", model_.constrained);
   out.array("/sph/prescribed_v", model_.prescribed_v);
@@ -162,8 +157,7 @@ void SphMethod::load(const StateReader& in) {
   std::vector<Vec3> lattices;
   in.array("/sph/lattices", lattices, 2 * model_.bodies.size());
   for (std::size_t b = 0; b < model_.bodies.size(); ++b) model_.lattices[b] = {lattices[2 * b], lattices[2 * b + 1]};
-  integrator_.restore(Clock{in.doubleScalar("sph_time"), in.intScalar("sph_steps"), in.doubleScalar("sph_dt_last"),
-                            in.doubleScalar("sph_dt_next"), in.doubleScalar("sph_dt_initial")},
+  integrator_.restore(loadClock(in, "sph_"),
                       static_cast<LocalIndex>(in.intScalar("sph_distorted")), in.doubleScalar("sph_dissipated"));
 }
 
