@@ -36,6 +36,19 @@ struct MirrorBox {
   std::array<double, 3> lo{-none, -none, -none};
   std::array<double, 3> hi{none, none, none};
   bool any() const;
+  // A free particle that has crossed a plane goes on as its image, which crossed it the other way:
+  // its position reflected back into the box and its velocity with it. For debris, which strikes
+  // bodies but no other debris, that is exact (docs/theory.md §12, "Kernel updates").
+  void reflectInto(Vec3& x, Vec3& v) const {
+    for (int a = 0; a < 3; ++a)
+      if (x[a] < lo[a]) {
+        x[a] = 2.0 * lo[a] - x[a];
+        v[a] = -v[a];
+      } else if (x[a] > hi[a]) {
+        x[a] = 2.0 * hi[a] - x[a];
+        v[a] = -v[a];
+      }
+  }
 };
 
 class Mirrors {

@@ -380,9 +380,15 @@ void Integrator::deform(double dt) {
   const LocalIndex n = points.owned;
   // The coefficients' displacements from the kernels' reference configuration, once each: the
   // gradient's loop below then reads one array at its scattered columns, not two.
+  // Debris alone in the kernels is its own coefficient (its particle's position and velocity): once
+  // across a symmetry plane or roller it goes on as its image, inside, where the bodies it may strike
+  // are (their images are none of the contact's).
+  const bool reflect_debris = !model_.alone.empty() && settings_.mirrors.any();
 #pragma omp parallel for schedule(static)
   for (LocalIndex i = 0; i < n; ++i) {
     model_.coefficient_x[i] += du_[i];
+    if (reflect_debris && model_.alone[static_cast<std::size_t>(i)] && points.debris(i))
+      settings_.mirrors.reflectInto(model_.coefficient_x[i], model_.coefficient_v[i]);
     displacement_[i] = model_.coefficient_x[i] - model_.reference[i];
   }
   const Table<Vec3>& g = kernels_.gradient;
