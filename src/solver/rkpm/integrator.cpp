@@ -379,10 +379,10 @@ void Integrator::deform(double dt) {
   PointStore& points = model_.points;
   const LocalIndex n = points.owned;
   // The coefficients' displacements from the kernels' reference configuration, once each: the
-  // gradient's loop below then reads one array at its scattered columns, not two.
-  // Debris alone in the kernels is its own coefficient (its particle's position and velocity): once
-  // across a symmetry plane or roller it goes on as its image, inside, where the bodies it may strike
-  // are (their images are none of the contact's).
+  // gradient's loop below then reads one array at its scattered columns, not two. Debris alone in the
+  // kernels is its own coefficient (its particle's position and velocity): once across a symmetry
+  // plane or roller it goes on as its image, inside, where the bodies it may strike are (their images
+  // are none of the contact's).
   const bool reflect_debris = !model_.alone.empty() && settings_.mirrors.any();
 #pragma omp parallel for schedule(static)
   for (LocalIndex i = 0; i < n; ++i) {
